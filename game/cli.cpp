@@ -1,0 +1,191 @@
+#include "game/cli.h"
+
+#include <charconv>
+#include <cmath>
+#include <functional>
+#include <map>
+#include <set>
+
+namespace boxing {
+namespace {
+
+eng::Error bad(const std::string& msg) { return eng::make_error("boxing: " + msg + " (see --help)"); }
+
+bool parse_int(const std::string& s, long long lo, long long hi, long long& out) {
+  const char* b = s.data();
+  const char* e = b + s.size();
+  auto [p, ec] = std::from_chars(b, e, out);
+  return ec == std::errc() && p == e && out >= lo && out <= hi;
+}
+
+bool parse_u64(const std::string& s, uint64_t& out) {
+  const char* b = s.data();
+  const char* e = b + s.size();
+  auto [p, ec] = std::from_chars(b, e, out);
+  return ec == std::errc() && p == e && !s.empty();
+}
+
+bool parse_double(const std::string& s, double lo, double hi, double& out) {
+  if (s.empty()) return false;
+  size_t used = 0;
+  try {
+    out = std::stod(s, &used);
+  } catch (...) {
+    return false;
+  }
+  return used == s.size() && std::isfinite(out) && out >= lo && out <= hi;
+}
+
+const std::set<std::string> kScenarios = {"arena", "ragdolls", "stand", "push", "graph-walk", "match"};
+const std::set<std::string> kCameras = {"default", "closeup", "side", "top"};
+const std::set<std::string> kServos = {"world", "person", "parent", "parent-meathook"};
+
+}  // namespace
+
+std::string help_text() {
+  return R"(boxing - physics-driven boxing prototype
+
+usage: boxing [flags]            play (window; headless when there is no display)
+       boxing graph [flags]      build the motion graph and write its report
+
+flags:
+  --help                 this text
+  --headless             render offscreen (lavapipe or a GPU), no window
+  --width N, --height N  frame size in pixels (default 1280x720)
+  --seconds S            simulated seconds to run, then exit (headless default 2)
+  --seed N               arena layout and all randomness (default 1)
+  --scenario NAME        arena | ragdolls | stand | push | graph-walk | match (default arena)
+  --camera NAME          default | closeup | side | top
+  --screenshot FILE.png  write the last frame
+  --report FILE.json     write what ran: seed, seconds, frames, device, frame times, scenario results
+  --frames-dir DIR       headless: write each rendered frame as DIR/frame_NNNNN.png
+  --render-every N       headless: render every Nth 60 Hz frame (default 0 = the last frame only)
+  --overlay, --no-overlay   Dear ImGui overlay (window default on, headless default off)
+  --ghost                draw the desired pose as a translucent ghost
+  --no-validation        skip the Vulkan validation layer (default: on, every error is counted)
+  --no-vsync             window: present without vsync
+  --servo MODE           world | person | parent | parent-meathook (boxer scenarios)
+  --push-dir DEG         push scenario: direction in boxer 0's heading frame (0 = toward where it faces)
+  --push-force N         push scenario: force in newtons
+  --push-duration S      push scenario: duration (default 0.1)
+  --push-at S            push scenario: start time (default 2)
+graph flags:
+  --report FILE.json     graph figures
+  --dot FILE.dot         the graph for Graphviz
+
+window controls: F12 screenshot (to out/), H toggle overlay, G toggle ghost, C cycle camera,
+                 right mouse drag orbit, wheel zoom, Esc quit
+)";
+}
+
+eng::Result<Options> parse_cli(const std::vector<std::string>& args) {
+  Options o;
+  size_t i = 0;
+  if (!args.empty() && args[0] == "graph") {
+    o.command = "graph";
+    i = 1;
+  }
+  auto need_value = [&](const std::string& flag) -> std::optional<std::string> {
+    if (i + 1 >= args.size()) return std::nullopt;
+    return args[++i];
+  };
+  for (; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    std::string flag = a, inline_value;
+    bool has_inline = false;
+    if (auto eq = a.find('='); a.rfind("--", 0) == 0 && eq != std::string::npos) {
+      flag = a.substr(0, eq);
+      inline_value = a.substr(eq + 1);
+      has_inline = true;
+    }
+    auto value = [&]() -> std::optional<std::string> {
+      if (has_inline) return inline_value;
+      return need_value(flag);
+    };
+    auto missing = [&]() { return bad("flag " + flag + " needs a value"); };
+
+    if (flag == "--help" || flag == "-h") {
+      o.help = true;
+    } else if (flag == "--headless") {
+      o.headless = o.headless_forced = true;
+    } else if (flag == "--width" || flag == "--height") {
+      auto v = value();
+      if (!v) return missing();
+      long long n;
+      if (!parse_int(*v, 16, 16384, n)) return bad(flag + " must be an integer from 16 to 16384, got '" + *v + "'");
+      (flag == "--width" ? o.width : o.height) = int(n);
+    } else if (flag == "--seconds") {
+      auto v = value();
+      if (!v) return missing();
+      if (!parse_double(*v, 0.0, 86400.0, o.seconds))
+        return bad("--seconds must be a number from 0 to 86400, got '" + *v + "'");
+    } else if (flag == "--seed") {
+      auto v = value();
+      if (!v) return missing();
+      if (!parse_u64(*v, o.seed)) return bad("--seed must be a non-negative integer, got '" + *v + "'");
+    } else if (flag == "--scenario") {
+      auto v = value();
+      if (!v) return missing();
+      if (!kScenarios.count(*v)) return bad("unknown scenario '" + *v + "'");
+      o.scenario = *v;
+    } else if (flag == "--camera") {
+      auto v = value();
+      if (!v) return missing();
+      if (!kCameras.count(*v)) return bad("unknown camera '" + *v + "'");
+      o.camera = *v;
+    } else if (flag == "--servo") {
+      auto v = value();
+      if (!v) return missing();
+      if (!kServos.count(*v)) return bad("unknown servo '" + *v + "' (world, person, parent, parent-meathook)");
+      o.servo = *v;
+    } else if (flag == "--screenshot" || flag == "--report" || flag == "--frames-dir" || flag == "--dot") {
+      auto v = value();
+      if (!v || v->empty()) return missing();
+      if (flag == "--screenshot") {
+        if (v->size() < 4 || v->substr(v->size() - 4) != ".png")
+          return bad("--screenshot needs a .png file name, got '" + *v + "'");
+        o.screenshot = *v;
+      } else if (flag == "--report") {
+        (o.command == "graph" ? o.graph_report : o.report) = *v;
+      } else if (flag == "--dot") {
+        if (o.command != "graph") return bad("--dot belongs to 'boxing graph'");
+        o.graph_dot = *v;
+      } else {
+        o.frames_dir = *v;
+      }
+    } else if (flag == "--render-every") {
+      auto v = value();
+      if (!v) return missing();
+      long long n;
+      if (!parse_int(*v, 0, 1000000, n)) return bad("--render-every must be a non-negative integer, got '" + *v + "'");
+      o.render_every = int(n);
+    } else if (flag == "--push-dir" || flag == "--push-force" || flag == "--push-duration" || flag == "--push-at") {
+      auto v = value();
+      if (!v) return missing();
+      double x;
+      double lo = flag == "--push-dir" ? -3600.0 : 0.0;
+      if (!parse_double(*v, lo, 1e6, x)) return bad(flag + " must be a number, got '" + *v + "'");
+      if (flag == "--push-dir") o.push_dir_deg = x;
+      else if (flag == "--push-force") o.push_force = x;
+      else if (flag == "--push-duration") o.push_duration = x;
+      else o.push_at = x;
+    } else if (flag == "--overlay" || flag == "--no-overlay") {
+      o.overlay = flag == "--overlay";
+      o.overlay_given = true;
+    } else if (flag == "--ghost") {
+      o.ghost = true;
+    } else if (flag == "--no-validation") {
+      o.validation = false;
+    } else if (flag == "--no-vsync") {
+      o.vsync = false;
+    } else {
+      return bad("unknown flag '" + a + "'");
+    }
+    if (has_inline && (flag == "--headless" || flag == "--help" || flag == "--ghost" || flag == "--overlay" ||
+                       flag == "--no-overlay" || flag == "--no-validation" || flag == "--no-vsync"))
+      return bad("flag " + flag + " takes no value");
+  }
+  return o;
+}
+
+}  // namespace boxing

@@ -1,0 +1,47 @@
+#pragma once
+// Command-line options of build/boxing. parse_cli never exits: a bad flag or value comes back as an Error whose
+// message is the one line main prints before exiting with code 2.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+#include "engine/core/result.h"
+
+namespace boxing {
+
+struct Options {
+  std::string command = "play";        // "play" (the game) or "graph" (motion-graph tool)
+  bool help = false;
+  bool headless = false;
+  bool headless_forced = false;        // --headless given (vs chosen because there is no display)
+  int width = 1280;
+  int height = 720;
+  double seconds = 0.0;                // simulated seconds to run, then exit (0 = until the window closes;
+                                       // headless defaults to 2 s)
+  uint64_t seed = 1;
+  std::string scenario = "arena";
+  std::string camera = "default";      // default | closeup | side | top
+  std::string screenshot;              // PNG of the last frame
+  std::string report;                  // JSON report
+  std::string frames_dir;              // headless: write every rendered frame here as PNG
+  int render_every = 0;                // headless: render every Nth display frame (0 = only the last)
+  bool validation = true;              // Khronos validation layer (default on; errors make tests fail)
+  bool overlay = true;                 // ImGui overlay in the window (off in headless screenshots unless asked)
+  bool overlay_given = false;
+  bool ghost = false;                  // translucent desired-pose ghost
+  bool vsync = true;
+  // scenario parameters (boxer / push-recovery scenarios)
+  std::string servo = "world";         // world | person | parent | parent-meathook
+  double push_dir_deg = 0.0;
+  double push_force = 0.0;
+  double push_duration = 0.1;
+  double push_at = 2.0;
+  // graph tool
+  std::string graph_report;
+  std::string graph_dot;
+};
+
+eng::Result<Options> parse_cli(const std::vector<std::string>& args);
+std::string help_text();
+
+}  // namespace boxing
