@@ -1,0 +1,214 @@
+#include "engine/assets/gltf.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+#include <glm/gtc/matrix_transform.hpp>
+#include <string>
+
+namespace {
+
+using eng::assets::load_gltf;
+
+std::string data(const std::string& name) { return std::string(BOXING_SOURCE_DIR) + "/tests/assets/data/" + name; }
+
+void expect_cube(const eng::assets::GltfScene& s) {
+  ASSERT_EQ(s.nodes.size(), 1u);
+  EXPECT_EQ(s.nodes[0].name, "cube");
+  EXPECT_EQ(s.nodes[0].mesh, 0);
+  EXPECT_EQ(s.nodes[0].parent, -1);
+  ASSERT_EQ(s.meshes.size(), 1u);
+  ASSERT_EQ(s.meshes[0].primitives.size(), 1u);
+  const auto& p = s.meshes[0].primitives[0];
+  ASSERT_EQ(p.positions.size(), 24u);
+  ASSERT_EQ(p.normals.size(), 24u);
+  ASSERT_EQ(p.indices.size(), 36u);
+  EXPECT_EQ(p.material, 0);
+  for (const auto& v : p.positions) {
+    EXPECT_FLOAT_EQ(std::abs(v.x), 0.5f);
+    EXPECT_FLOAT_EQ(std::abs(v.y), 0.5f);
+    EXPECT_FLOAT_EQ(std::abs(v.z), 0.5f);
+  }
+  // First face is +X: interleaved normal (stride 24) must read back as (1, 0, 0).
+  EXPECT_FLOAT_EQ(p.normals[0].x, 1.f);
+  EXPECT_FLOAT_EQ(p.normals[0].y, 0.f);
+  EXPECT_FLOAT_EQ(p.positions[0].x, 0.5f);
+  EXPECT_EQ(p.indices[0], 0u);
+  EXPECT_EQ(p.indices[35], 23u);
+  for (uint32_t i : p.indices) EXPECT_LT(i, 24u);
+  ASSERT_EQ(s.materials.size(), 1u);
+  EXPECT_EQ(s.materials[0].name, "red");
+  EXPECT_FLOAT_EQ(s.materials[0].base_color.r, 1.f);
+  EXPECT_FLOAT_EQ(s.materials[0].base_color.g, 0.f);
+  EXPECT_FLOAT_EQ(s.materials[0].roughness, 0.5f);
+  EXPECT_FLOAT_EQ(s.materials[0].metallic, 0.f);
+}
+
+TEST(Gltf, LoadsEmbeddedCube) {
+  auto r = load_gltf(data("cube.gltf"));
+  ASSERT_TRUE(r.ok()) << r.error();
+  EXPECT_EQ(r->path, data("cube.gltf"));
+  expect_cube(*r);
+}
+
+TEST(Gltf, LoadsGlbCubeWithUint32Indices) {
+  auto r = load_gltf(data("cube.glb"));
+  ASSERT_TRUE(r.ok()) << r.error();
+  expect_cube(*r);
+}
+
+TEST(Gltf, LoadsExternalBinWithUbyteIndices) {
+  auto r = load_gltf(data("cube_external.gltf"));
+  ASSERT_TRUE(r.ok()) << r.error();
+  expect_cube(*r);
+}
+
+TEST(Gltf, HierarchyParentsExtrasAndWorldMatrix) {
+  auto r = load_gltf(data("hierarchy.gltf"));
+  ASSERT_TRUE(r.ok()) << r.error();
+  const auto& s = *r;
+  ASSERT_EQ(s.nodes.size(), 2u);
+  EXPECT_EQ(s.find_node("root"), 0);
+  EXPECT_EQ(s.find_node("child"), 1);
+  EXPECT_EQ(s.find_node("nope"), -1);
+  EXPECT_EQ(s.nodes[0].parent, -1);
+  EXPECT_EQ(s.nodes[1].parent, 0);
+  ASSERT_EQ(s.nodes[0].children.size(), 1u);
+  EXPECT_EQ(s.nodes[0].children[0], 1);
+  EXPECT_EQ(s.nodes[0].extras["tag"], "root");
+  EXPECT_EQ(s.nodes[0].extras["count"], 3);
+  EXPECT_DOUBLE_EQ(s.nodes[0].extras["list"][1].get<double>(), 2.5);
+  EXPECT_EQ(s.nodes[0].extras["list"][2], "x");
+  EXPECT_EQ(s.nodes[0].extras["obj"]["flag"], true);
+  EXPECT_DOUBLE_EQ(s.nodes[1].extras["physics"]["mass"].get<double>(), 1.5);
+  EXPECT_EQ(s.extras["level"], "test");
+  EXPECT_EQ(s.extras["version"], 2);
+  // Rotation is stored xyzw in the file, glm (w, x, y, z) in memory: 90 deg about Z.
+  EXPECT_NEAR(s.nodes[1].rotation.w, 0.7071068f, 1e-6f);
+  EXPECT_NEAR(s.nodes[1].rotation.z, 0.7071068f, 1e-6f);
+  EXPECT_FLOAT_EQ(s.nodes[1].scale.x, 2.f);
+  const glm::mat4 w = s.world_matrix(1);
+  const glm::vec4 o = w * glm::vec4(0, 0, 0, 1);
+  EXPECT_NEAR(o.x, 1.f, 1e-5f);
+  EXPECT_NEAR(o.y, 2.f, 1e-5f);
+  const glm::vec4 x = w * glm::vec4(1, 0, 0, 1);  // scale 2, rotate to +Y, + (0,2,0), + (1,0,0)
+  EXPECT_NEAR(x.x, 1.f, 1e-5f);
+  EXPECT_NEAR(x.y, 4.f, 1e-5f);
+  EXPECT_NEAR(x.z, 0.f, 1e-5f);
+  const glm::vec4 bad = s.world_matrix(99) * glm::vec4(1, 2, 3, 1);
+  EXPECT_FLOAT_EQ(bad.y, 2.f);  // identity for an invalid index
+}
+
+TEST(Gltf, AnimationChannels) {
+  auto r = load_gltf(data("anim.gltf"));
+  ASSERT_TRUE(r.ok()) << r.error();
+  ASSERT_EQ(r->animations.size(), 1u);
+  const auto& a = r->animations[0];
+  EXPECT_EQ(a.name, "wave");
+  EXPECT_EQ(a.extras["loop"], true);
+  ASSERT_EQ(a.channels.size(), 2u);
+  const auto& rot = a.channels[0];
+  EXPECT_EQ(rot.node, 0);
+  EXPECT_EQ(rot.path, "rotation");
+  EXPECT_EQ(rot.interpolation, "LINEAR");
+  ASSERT_EQ(rot.times.size(), 3u);
+  ASSERT_EQ(rot.values.size(), 12u);
+  EXPECT_FLOAT_EQ(rot.times[1], 0.5f);
+  EXPECT_FLOAT_EQ(rot.values[3], 1.f);          // key 0: identity, xyzw
+  EXPECT_FLOAT_EQ(rot.values[6], 0.3826834f);   // key 1: z
+  EXPECT_FLOAT_EQ(rot.values[11], 0.7071068f);  // key 2: w
+  const auto& tr = a.channels[1];
+  EXPECT_EQ(tr.path, "translation");
+  EXPECT_EQ(tr.interpolation, "STEP");
+  ASSERT_EQ(tr.values.size(), 6u);
+  EXPECT_FLOAT_EQ(tr.values[5], 1.f);
+}
+
+TEST(Gltf, MissingFileNamesThePath) {
+  const std::string path = data("does_not_exist.gltf");
+  auto r = load_gltf(path);
+  ASSERT_FALSE(r.ok());
+  EXPECT_NE(r.error().find("cannot open content file '" + path + "'"), std::string::npos) << r.error();
+  EXPECT_NE(r.error().find("file not found"), std::string::npos) << r.error();
+}
+
+void expect_broken(const std::string& name, const std::string& what) {
+  const std::string path = data(name);
+  auto r = load_gltf(path);
+  ASSERT_FALSE(r.ok()) << name << " loaded but is broken";
+  EXPECT_NE(r.error().find("broken glTF '" + path + "'"), std::string::npos) << r.error();
+  EXPECT_NE(r.error().find(what), std::string::npos) << r.error();
+  EXPECT_NE(r.error().find("scripts/content/"), std::string::npos) << r.error();
+}
+
+TEST(Gltf, BrokenJsonIsAnError) { expect_broken("broken_json.gltf", ""); }
+TEST(Gltf, AccessorOutOfRangeIsAnError) { expect_broken("accessor_out_of_range.gltf", "accessor"); }
+TEST(Gltf, BadIndicesAreAnError) { expect_broken("bad_indices.gltf", "out of range"); }
+TEST(Gltf, MissingPositionIsAnError) { expect_broken("no_position.gltf", "POSITION"); }
+
+TEST(Gltf, GarbageInputNeverCrashes) {
+  const std::string dir = std::string(BOXING_BINARY_DIR) + "/";
+  const std::string cases[] = {
+      "",
+      "{",
+      "[]",
+      "{\"asset\":{\"version\":\"2.0\"},\"nodes\":5}",
+      "{\"asset\":{\"version\":\"2.0\"},\"nodes\":[{\"children\":[0]}]}",
+      "{\"asset\":{\"version\":\"2.0\"},\"nodes\":[{\"children\":[7]}]}",
+      "{\"asset\":{\"version\":\"2.0\"},\"nodes\":[{\"children\":[1]},{\"children\":[0]}]}",
+      "{\"asset\":{\"version\":\"2.0\"},\"nodes\":[{\"mesh\":3}]}",
+      "{\"asset\":{\"version\":\"2.0\"},\"buffers\":[{\"byteLength\":4,\"uri\":\"data:application/"
+      "octet-stream;base64,AAAAAA==\"}],\"bufferViews\":[{\"buffer\":0,\"byteOffset\":2,\"byteLength\":100}],"
+      "\"accessors\":[{\"bufferView\":0,\"componentType\":5126,\"count\":3,\"type\":\"VEC3\"}],"
+      "\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0}}]}]}",
+      "glTF\x02\0\0\0\xff\xff\xff\x7f",
+  };
+  int i = 0;
+  for (const std::string& text : cases) {
+    const std::string path = dir + "assets_garbage_" + std::to_string(i++) + ".gltf";
+    {
+      std::ofstream f(path, std::ios::binary);
+      f << text;
+    }
+    auto r = load_gltf(path);  // ok or a clear error; must not crash
+    if (!r.ok()) {
+      EXPECT_NE(r.error().find(path), std::string::npos) << r.error();
+    }
+    std::remove(path.c_str());
+  }
+}
+
+TEST(Gltf, BoxerContentLoads) {
+  auto r = load_gltf(std::string(BOXING_SOURCE_DIR) + "/content/boxer/boxer.gltf");
+  ASSERT_TRUE(r.ok()) << r.error();
+  const char* bones[] = {"pelvis",  "abdomen", "chest",   "head",        "upper_arm_l", "forearm_l",
+                         "glove_l", "upper_arm_r", "forearm_r", "glove_r", "thigh_l",     "shank_l",
+                         "foot_l",  "thigh_r", "shank_r", "foot_r"};
+  int n = 0;
+  for (const char* b : bones) {
+    const int i = r->find_node(b);
+    ASSERT_GE(i, 0) << b;
+    EXPECT_TRUE(r->nodes[static_cast<size_t>(i)].extras.contains("physics")) << b;
+    EXPECT_GE(r->nodes[static_cast<size_t>(i)].mesh, 0) << b;
+    ++n;
+  }
+  EXPECT_EQ(n, 16);
+  int with_physics = 0;
+  for (const auto& node : r->nodes) with_physics += node.extras.contains("physics") ? 1 : 0;
+  EXPECT_EQ(with_physics, 16);
+  EXPECT_TRUE(r->extras.contains("character"));
+  for (const char* m : {"skin", "team", "glove", "shoe", "shorts"}) {
+    bool found = false;
+    for (const auto& mat : r->materials) found = found || mat.name == m;
+    EXPECT_TRUE(found) << m;
+  }
+  // Rest pose: root joint at z = 0.97, glove wrist at 0.97 + 0.10 + 0.18 + 0.19 - 0.30 - 0.26.
+  const glm::vec4 root = r->world_matrix(r->find_node("pelvis")) * glm::vec4(0, 0, 0, 1);
+  EXPECT_NEAR(root.z, 0.97f, 1e-6f);
+  const glm::vec4 wrist = r->world_matrix(r->find_node("glove_l")) * glm::vec4(0, 0, 0, 1);
+  EXPECT_NEAR(wrist.y, 0.19f, 1e-6f);
+  EXPECT_NEAR(wrist.z, 0.88f, 1e-5f);
+}
+
+}  // namespace
