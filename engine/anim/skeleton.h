@@ -37,3 +37,19 @@ struct PoseSample {
 };
 
 }  // namespace eng::anim
+
+namespace eng::anim {
+
+// The 16-bone boxer skeleton (names/offsets as in content/boxer/boxer.gltf and
+// content/clips/boxing_clips.gltf). For tests and tools; the game reads the skeleton from content.
+Skeleton boxer_skeleton();
+
+// Forward kinematics: world joint positions and world bone orientations of a parent-space pose.
+void forward_kinematics(const Skeleton& s, const Pose& p, std::vector<Eigen::Vector3d>* world_pos,
+                        std::vector<Eigen::Quaterniond>* world_rot);
+
+// Rotation vector <-> unit quaternion (angle * axis; Log takes the shortest arc, |Log| <= pi).
+Eigen::Quaterniond quat_exp(const Eigen::Vector3d& v);
+Eigen::Vector3d quat_log(const Eigen::Quaterniond& q);
+
+}  // namespace eng::anim

@@ -1,0 +1,241 @@
+#include "engine/anim/clip.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "engine/assets/gltf.h"
+
+namespace eng::anim {
+
+namespace {
+
+using Eigen::Quaterniond;
+using Eigen::Vector3d;
+
+// Segment index i with key_times[i] <= t <= key_times[i+1].
+int find_segment(const std::vector<double>& kt, double t) {
+  auto it = std::upper_bound(kt.begin(), kt.end(), t);
+  int i = static_cast<int>(it - kt.begin()) - 1;
+  return std::clamp(i, 0, static_cast<int>(kt.size()) - 2);
+}
+
+double wrap_time(const Clip& c, double t) {
+  const double d = c.duration();
+  if (d <= 0.0) return 0.0;
+  if (c.loop) {
+    double r = std::fmod(t, d);
+    if (r < 0) r += d;
+    return r;
+  }
+  return std::clamp(t, 0.0, d);
+}
+
+// Neighbour key indices and spacings of key k: (prev, h_prev, next, h_next); -1 when none.
+struct Nb {
+  int prev, next;
+  double hp, hn;
+};
+Nb neighbours(const Clip& c, int k) {
+  const int n = static_cast<int>(c.keys.size());
+  const auto& t = c.key_times;
+  Nb r{-1, -1, 0.0, 0.0};
+  if (c.loop) {  // keys[n-1] == keys[0]
+    const int kk = (k == n - 1) ? 0 : k;
+    r.prev = kk == 0 ? n - 2 : kk - 1;
+    r.hp = kk == 0 ? t[n - 1] - t[n - 2] : t[kk] - t[kk - 1];
+    r.next = kk + 1;
+    r.hn = t[kk + 1] - t[kk];
+    if (r.prev < 0) r.prev = -1;
+    return r;
+  }
+  if (k == 0 || k == n - 1) return r;  // zero velocity at the ends
+  r.prev = k - 1;
+  r.hp = t[k] - t[k - 1];
+  r.next = k + 1;
+  r.hn = t[k + 1] - t[k];
+  return r;
+}
+
+// Body-frame angular velocity tangent of bone b at key k.
+Vector3d rot_tangent(const Clip& c, int b, int k) {
+  const Nb nb = neighbours(c, k);
+  if (nb.prev < 0 || nb.next < 0 || nb.hp <= 0 || nb.hn <= 0) return Vector3d::Zero();
+  const Quaterniond& q = c.keys[k].rotation[b];
+  const Vector3d sp = quat_log(c.keys[nb.prev].rotation[b].conjugate() * q) / nb.hp;
+  const Vector3d sn = quat_log(q.conjugate() * c.keys[nb.next].rotation[b]) / nb.hn;
+  return (nb.hn * sp + nb.hp * sn) / (nb.hp + nb.hn);
+}
+
+Vector3d pos_tangent(const Clip& c, int k) {
+  const Nb nb = neighbours(c, k);
+  if (nb.prev < 0 || nb.next < 0 || nb.hp <= 0 || nb.hn <= 0) return Vector3d::Zero();
+  const Vector3d& p = c.keys[k].root_position;
+  const Vector3d sp = (p - c.keys[nb.prev].root_position) / nb.hp;
+  const Vector3d sn = (c.keys[nb.next].root_position - p) / nb.hn;
+  return (nb.hn * sp + nb.hp * sn) / (nb.hp + nb.hn);
+}
+
+Pose pose_at(const Clip& c, double t) {
+  Pose out;
+  const int nb = c.keys.empty() ? 0 : static_cast<int>(c.keys[0].rotation.size());
+  out.rotation.resize(nb, Quaterniond::Identity());
+  if (c.keys.empty()) return out;
+  if (c.keys.size() == 1) return c.keys[0];
+  t = wrap_time(c, t);
+  const int i = find_segment(c.key_times, t);
+  const double h = c.key_times[i + 1] - c.key_times[i];
+  const double u = h > 0 ? std::clamp((t - c.key_times[i]) / h, 0.0, 1.0) : 0.0;
+  const double u2 = u * u, u3 = u2 * u;
+  // root position: cubic Hermite
+  {
+    const Vector3d& p0 = c.keys[i].root_position;
+    const Vector3d& p1 = c.keys[i + 1].root_position;
+    const Vector3d m0 = pos_tangent(c, i) * h, m1 = pos_tangent(c, i + 1) * h;
+    out.root_position = (2 * u3 - 3 * u2 + 1) * p0 + (u3 - 2 * u2 + u) * m0 + (-2 * u3 + 3 * u2) * p1 +
+                        (u3 - u2) * m1;
+  }
+  const double b1 = 1.0 - (1.0 - u) * (1.0 - u) * (1.0 - u), b2 = 3 * u2 - 2 * u3, b3 = u3;
+  for (int b = 0; b < nb; ++b) {
+    const Quaterniond& q0 = c.keys[i].rotation[b];
+    Quaterniond q3 = c.keys[i + 1].rotation[b];
+    if (q0.dot(q3) < 0) q3.coeffs() = -q3.coeffs();
+    const Vector3d r1 = rot_tangent(c, b, i) * (h / 3.0);
+    const Vector3d r3 = rot_tangent(c, b, i + 1) * (h / 3.0);
+    const Quaterniond q1 = q0 * quat_exp(r1);
+    const Quaterniond q2 = q3 * quat_exp(-r3);
+    const Vector3d r2 = quat_log(q1.conjugate() * q2);
+    out.rotation[b] = (q0 * quat_exp(r1 * b1) * quat_exp(r2 * b2) * quat_exp(r3 * b3)).normalized();
+  }
+  return out;
+}
+
+}  // namespace
+
+bool Clip::has_tag(const std::string& tag) const {
+  return std::find(tags.begin(), tags.end(), tag) != tags.end();
+}
+
+Pose sample_clip_pose(const Clip& c, double t) { return pose_at(c, t); }
+
+Eigen::Vector3d angular_velocity_between(const Eigen::Quaterniond& qa, const Eigen::Quaterniond& qb,
+                                         double dt) {
+  return quat_log(qb * qa.conjugate()) / dt;
+}
+
+PoseSample sample_clip(const Clip& c, double t) {
+  constexpr double kH = 1e-4;
+  PoseSample s;
+  s.pose = pose_at(c, t);
+  double ta = t - kH, tb = t + kH;
+  if (!c.loop) {
+    const double tc = std::clamp(t, 0.0, c.duration());
+    ta = std::max(0.0, tc - kH);
+    tb = std::min(c.duration(), tc + kH);
+  }
+  const int nb = static_cast<int>(s.pose.rotation.size());
+  s.angular_velocity.assign(nb, Vector3d::Zero());
+  if (tb - ta <= 0.0) return s;
+  const Pose a = pose_at(c, ta), b = pose_at(c, tb);
+  const double dt = tb - ta;
+  s.root_velocity = (b.root_position - a.root_position) / dt;
+  for (int i = 0; i < nb; ++i) s.angular_velocity[i] = angular_velocity_between(a.rotation[i], b.rotation[i], dt);
+  return s;
+}
+
+int find_clip(const std::vector<Clip>& clips, const std::string& name) {
+  for (size_t i = 0; i < clips.size(); ++i)
+    if (clips[i].name == name) return static_cast<int>(i);
+  return -1;
+}
+
+eng::Result<std::vector<Clip>> load_clips(const std::string& path, const Skeleton& sk) {
+  auto scene = eng::assets::load_gltf(path);
+  if (!scene) return eng::make_error("load_clips: " + scene.error());
+  const auto& sc = *scene;
+  auto fail = [&](const std::string& anim, const std::string& msg) {
+    return eng::make_error("load_clips: " + path + ": animation '" + anim + "': " + msg);
+  };
+  if (sc.animations.empty()) return eng::make_error("load_clips: " + path + ": no animations");
+  std::vector<Clip> out;
+  for (const auto& a : sc.animations) {
+    Clip c;
+    c.name = a.name;
+    const auto& ex = a.extras;
+    if (!ex.is_object() || !ex.contains("tags") || !ex["tags"].is_array() || !ex.contains("loop") ||
+        !ex["loop"].is_boolean())
+      return fail(a.name, "missing metadata: extras.tags (array) and extras.loop (bool) are required");
+    for (const auto& t : ex["tags"]) {
+      if (!t.is_string()) return fail(a.name, "extras.tags must hold strings");
+      c.tags.push_back(t.get<std::string>());
+    }
+    c.loop = ex["loop"].get<bool>();
+    if (ex.contains("glove") && ex["glove"].is_string()) {
+      c.glove = sk.find(ex["glove"].get<std::string>());
+      if (c.glove < 0) return fail(a.name, "extras.glove '" + ex["glove"].get<std::string>() + "' is not a bone");
+    }
+    if (ex.contains("impact") && ex["impact"].is_number()) c.impact_time = ex["impact"].get<double>();
+    if (ex.contains("next") && ex["next"].is_array())
+      for (const auto& t : ex["next"])
+        if (t.is_string()) c.next.push_back(t.get<std::string>());
+    if (c.has_tag("punch") && (c.glove < 0 || c.impact_time < 0))
+      return fail(a.name, "missing metadata: punches need extras.glove and extras.impact");
+
+    // key times: those of the root translation channel; every channel must share them
+    const eng::assets::GltfChannel* root_ch = nullptr;
+    for (const auto& ch : a.channels) {
+      if (ch.node < 0 || ch.node >= static_cast<int>(sc.nodes.size()))
+        return fail(a.name, "channel targets a missing node");
+      const std::string& nn = sc.nodes[ch.node].name;
+      const int bone = sk.find(nn);
+      if (bone < 0) return fail(a.name, "channel on node '" + nn + "', which is not a skeleton bone");
+      if (bone == 0 && ch.path == "translation") root_ch = &ch;
+    }
+    if (!root_ch) return fail(a.name, "no translation channel on the root bone '" + sk.name[0] + "'");
+    for (double t : root_ch->times) c.key_times.push_back(t);
+    const size_t nk = c.key_times.size();
+    if (nk < 2) return fail(a.name, "needs at least two keys");
+    for (size_t k = 1; k < nk; ++k)
+      if (!(c.key_times[k] > c.key_times[k - 1])) return fail(a.name, "key times must increase");
+    if (std::abs(c.key_times[0]) > 1e-6) return fail(a.name, "first key must be at time 0");
+    c.key_times[0] = 0.0;
+    Pose rest;
+    rest.rotation.assign(sk.size(), Eigen::Quaterniond::Identity());
+    c.keys.assign(nk, rest);
+    for (const auto& ch : a.channels) {
+      const int bone = sk.find(sc.nodes[ch.node].name);
+      if (ch.times.size() != nk) return fail(a.name, "channel key times differ from the root's");
+      for (size_t k = 0; k < nk; ++k)
+        if (std::abs(ch.times[k] - root_ch->times[k]) > 1e-6)
+          return fail(a.name, "channel key times differ from the root's");
+      if (ch.interpolation == "CUBICSPLINE") return fail(a.name, "CUBICSPLINE channels are not supported");
+      if (ch.path == "rotation") {
+        if (ch.values.size() != 4 * nk) return fail(a.name, "rotation channel has the wrong value count");
+        for (size_t k = 0; k < nk; ++k) {
+          Eigen::Quaterniond q(ch.values[4 * k + 3], ch.values[4 * k], ch.values[4 * k + 1], ch.values[4 * k + 2]);
+          if (q.norm() < 1e-6) return fail(a.name, "zero quaternion");
+          c.keys[k].rotation[bone] = q.normalized();
+        }
+      } else if (ch.path == "translation") {
+        if (bone != 0) continue;  // bone offsets are fixed; only the root translates
+        if (ch.values.size() != 3 * nk) return fail(a.name, "translation channel has the wrong value count");
+        for (size_t k = 0; k < nk; ++k)
+          c.keys[k].root_position = Eigen::Vector3d(ch.values[3 * k], ch.values[3 * k + 1], ch.values[3 * k + 2]);
+      }
+    }
+    // hemisphere continuity
+    for (int b = 0; b < sk.size(); ++b)
+      for (size_t k = 1; k < nk; ++k)
+        if (c.keys[k].rotation[b].dot(c.keys[k - 1].rotation[b]) < 0)
+          c.keys[k].rotation[b].coeffs() = -c.keys[k].rotation[b].coeffs();
+    if (c.has_tag("punch") && !(c.impact_time > 0 && c.impact_time < c.duration()))
+      return fail(a.name, "impact time outside the clip");
+    if (c.next.empty()) c.next.push_back("guard");
+    out.push_back(std::move(c));
+  }
+  for (const auto& c : out)
+    for (const auto& n : c.next)
+      if (find_clip(out, n) < 0) return fail(c.name, "extras.next names unknown clip '" + n + "'");
+  return out;
+}
+
+}  // namespace eng::anim

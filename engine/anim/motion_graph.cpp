@@ -1,0 +1,626 @@
+#include "engine/anim/motion_graph.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <queue>
+#include <set>
+#include <sstream>
+
+namespace eng::anim {
+
+using Eigen::Quaterniond;
+using Eigen::Vector3d;
+
+// ------------------------------------------------------------------------------------------ Align2D
+Vector3d Align2D::apply(const Vector3d& p) const {
+  const double c = std::cos(theta), s = std::sin(theta);
+  return Vector3d(c * p.x() - s * p.y() + tx, s * p.x() + c * p.y() + ty, p.z());
+}
+
+Quaterniond Align2D::rotation() const { return Quaterniond(Eigen::AngleAxisd(theta, Vector3d::UnitZ())); }
+
+Align2D Align2D::then(const Align2D& in) const {
+  Align2D r;
+  r.theta = theta + in.theta;
+  const Vector3d t = apply(Vector3d(in.tx, in.ty, 0.0));
+  r.tx = t.x();
+  r.ty = t.y();
+  return r;
+}
+
+// Closed form (Kovar et al. 2002, appendix; 2D Procrustes): with weighted centroids a_c, b_c of the
+// floor coordinates and centred coordinates a', b':
+//   theta = atan2(sum w (b'x a'y - b'y a'x), sum w (b'x a'x + b'y a'y)),  t = a_c - R(theta) b_c.
+// Heights are untouched by the alignment and simply add to the residual.
+Align2D align_2d(const std::vector<Vector3d>& a, const std::vector<Vector3d>& b, const std::vector<double>& w) {
+  const size_t n = std::min(a.size(), b.size());
+  double W = 0, ax = 0, ay = 0, bx = 0, by = 0;
+  for (size_t i = 0; i < n; ++i) {
+    const double wi = w.empty() ? 1.0 : w[i];
+    W += wi;
+    ax += wi * a[i].x();
+    ay += wi * a[i].y();
+    bx += wi * b[i].x();
+    by += wi * b[i].y();
+  }
+  Align2D r;
+  if (W <= 0) return r;
+  ax /= W;
+  ay /= W;
+  bx /= W;
+  by /= W;
+  double num = 0, den = 0;
+  for (size_t i = 0; i < n; ++i) {
+    const double wi = w.empty() ? 1.0 : w[i];
+    const double pax = a[i].x() - ax, pay = a[i].y() - ay, pbx = b[i].x() - bx, pby = b[i].y() - by;
+    num += wi * (pbx * pay - pby * pax);
+    den += wi * (pbx * pax + pby * pay);
+  }
+  r.theta = std::atan2(num, den);
+  const double c = std::cos(r.theta), s = std::sin(r.theta);
+  r.tx = ax - (c * bx - s * by);
+  r.ty = ay - (s * bx + c * by);
+  return r;
+}
+
+// ------------------------------------------------------------------------------------------ graph
+namespace {
+
+// Clips entered only through force_clip (hits, knockdowns) or a natural continuation, never by a
+// random transition: a boxer must not flinch or fall without being hit.
+bool is_entry_only(const Clip& c) {
+  return c.has_tag("fall") || c.has_tag("down") || c.has_tag("getup") || c.has_tag("reaction");
+}
+bool is_source_excluded(const Clip& c) { return c.has_tag("fall") || c.has_tag("down"); }
+
+Pose blend_pose(const Pose& a, const Pose& b, double w) {
+  Pose out;
+  out.root_position = (1.0 - w) * a.root_position + w * b.root_position;
+  out.rotation.resize(a.rotation.size());
+  for (size_t i = 0; i < a.rotation.size(); ++i) out.rotation[i] = a.rotation[i].slerp(w, b.rotation[i]).normalized();
+  return out;
+}
+
+Pose to_world(const Pose& p, const Align2D& T) {
+  Pose out = p;
+  out.root_position = T.apply(p.root_position);
+  if (!out.rotation.empty()) out.rotation[0] = (T.rotation() * p.rotation[0]).normalized();
+  return out;
+}
+
+double ease(double u) {
+  u = std::clamp(u, 0.0, 1.0);
+  return u * u * (3.0 - 2.0 * u);
+}
+
+}  // namespace
+
+std::vector<Vector3d> MotionGraph::point_cloud(const Pose& p) const {
+  std::vector<Vector3d> wp;
+  std::vector<Quaterniond> wr;
+  forward_kinematics(skeleton, p, &wp, &wr);
+  std::vector<Vector3d> pts = wp;
+  auto extra = [&](const char* bone, const Vector3d& off) {
+    const int b = skeleton.find(bone);
+    if (b >= 0) pts.push_back(wp[b] + wr[b] * off);
+  };
+  extra("glove_l", Vector3d(0, 0, -0.08));
+  extra("glove_r", Vector3d(0, 0, -0.08));
+  extra("foot_l", Vector3d(0.14, 0, -0.08));
+  extra("foot_r", Vector3d(0.14, 0, -0.08));
+  extra("head", Vector3d(0, 0, 0.2));
+  return pts;
+}
+
+void MotionGraph::build(const std::vector<Clip>& cl, const GraphOptions& opt, const Skeleton& sk) {
+  clips = cl;
+  options = opt;
+  skeleton = sk;
+  nodes.clear();
+  edges.clear();
+  first_node.clear();
+  frame_count.clear();
+  const int C = static_cast<int>(clips.size());
+  const int k = std::max(1, options.window);
+  // frames and point clouds
+  std::vector<std::vector<std::vector<Vector3d>>> cloud(C);
+  for (int c = 0; c < C; ++c) {
+    const int n = static_cast<int>(std::floor(clips[c].duration() * options.fps + 1e-9)) + 1;
+    first_node.push_back(static_cast<int>(nodes.size()));
+    frame_count.push_back(n);
+    for (int f = 0; f < n; ++f) {
+      nodes.push_back({c, f});
+      cloud[c].push_back(point_cloud(sample_clip_pose(clips[c], f / options.fps)));
+    }
+  }
+  edges.assign(nodes.size(), {});
+  for (int c = 0; c < C; ++c)
+    for (int f = 0; f + 1 < frame_count[c]; ++f) {
+      GraphEdge e;
+      e.to = node(c, f + 1);
+      e.kind = EdgeKind::Next;
+      edges[node(c, f)].push_back(e);
+    }
+
+  // window distances and candidate transitions
+  const int P = cloud.empty() || cloud[0].empty() ? 1 : static_cast<int>(cloud[0][0].size());
+  double sum_rms = 0.0;
+  candidate_pairs = 0;
+  transitions_before_prune = 0;
+  std::vector<Vector3d> wa, wb;
+  for (int a = 0; a < C; ++a) {
+    if (is_source_excluded(clips[a])) continue;
+    for (int b = 0; b < C; ++b) {
+      if (is_entry_only(clips[b])) continue;
+      const int na = frame_count[a] - k + 1, nb = frame_count[b] - k + 1;
+      if (na <= 0 || nb <= 0) continue;
+      std::vector<double> D(static_cast<size_t>(na) * nb);
+      std::vector<Align2D> AL(D.size());
+      for (int i = 0; i < na; ++i)
+        for (int j = 0; j < nb; ++j) {
+          wa.clear();
+          wb.clear();
+          for (int q = 0; q < k; ++q) {
+            wa.insert(wa.end(), cloud[a][i + q].begin(), cloud[a][i + q].end());
+            wb.insert(wb.end(), cloud[b][j + q].begin(), cloud[b][j + q].end());
+          }
+          const Align2D T = align_2d(wa, wb);
+          double d = 0;
+          for (size_t m = 0; m < wa.size(); ++m) d += (wa[m] - T.apply(wb[m])).squaredNorm();
+          D[i * nb + j] = d;
+          AL[i * nb + j] = T;
+          sum_rms += std::sqrt(d / (k * P));
+          ++candidate_pairs;
+        }
+      for (int i = 0; i < na; ++i)
+        for (int j = 0; j < nb; ++j) {
+          if (a == b && std::abs(i - j) < options.min_self_gap_windows * k) continue;
+          const double d = D[i * nb + j];
+          const double rms = std::sqrt(d / (k * P));
+          if (rms >= options.threshold_rms) continue;
+          bool local_min = true;
+          for (int di = -1; di <= 1 && local_min; ++di)
+            for (int dj = -1; dj <= 1; ++dj) {
+              const int ii = i + di, jj = j + dj;
+              if ((di || dj) && ii >= 0 && jj >= 0 && ii < na && jj < nb && D[ii * nb + jj] < d) {
+                local_min = false;
+                break;
+              }
+            }
+          if (!local_min) continue;
+          GraphEdge e;
+          e.to = node(b, j + k - 1);
+          e.kind = EdgeKind::Transition;
+          e.blend = (k - 1) / options.fps;
+          e.dst_start_frame = j;
+          e.align = AL[i * nb + j];
+          e.rms = rms;
+          edges[node(a, i)].push_back(e);
+          ++transitions_before_prune;
+        }
+    }
+  }
+  mean_rms = candidate_pairs ? sum_rms / candidate_pairs : 0.0;
+
+  // natural continuations and knockdown edges
+  const int guard = clip_index("guard");
+  for (int a = 0; a < C; ++a) {
+    std::vector<std::string> next = clips[a].next;
+    if (next.empty()) next.push_back(clips[a].loop ? clips[a].name : "guard");
+    const int last = frame_count[a] - 1;
+    const Pose pa = sample_clip_pose(clips[a], clips[a].duration());
+    for (const auto& nn : next) {
+      const int b = clip_index(nn);
+      if (b < 0) continue;
+      GraphEdge e;
+      e.to = node(b, 0);
+      e.kind = EdgeKind::Continuation;
+      e.align = align_2d(point_cloud(pa), cloud[b][0]);
+      edges[node(a, last)].push_back(e);
+    }
+    if ((clips[a].has_tag("fall") || clips[a].has_tag("reaction")) && guard >= 0) {
+      GraphEdge e;
+      e.to = node(a, 0);
+      e.kind = EdgeKind::Knockdown;
+      e.align = align_2d(cloud[guard][0], cloud[a][0]);
+      edges[node(guard, 0)].push_back(e);
+    }
+  }
+
+  // largest strongly connected component: iterative Tarjan
+  const int N = static_cast<int>(nodes.size());
+  std::vector<int> index(N, -1), low(N, 0), comp(N, -1), stack;
+  std::vector<char> on_stack(N, 0);
+  std::vector<std::pair<int, size_t>> call;
+  int counter = 0, ncomp = 0;
+  for (int s = 0; s < N; ++s) {
+    if (index[s] >= 0) continue;
+    call.push_back({s, 0});
+    index[s] = low[s] = counter++;
+    stack.push_back(s);
+    on_stack[s] = 1;
+    while (!call.empty()) {
+      auto& [v, ei] = call.back();
+      if (ei < edges[v].size()) {
+        const int w = edges[v][ei++].to;
+        if (index[w] < 0) {
+          index[w] = low[w] = counter++;
+          stack.push_back(w);
+          on_stack[w] = 1;
+          call.push_back({w, 0});
+        } else if (on_stack[w]) {
+          low[v] = std::min(low[v], index[w]);
+        }
+      } else {
+        const int vv = v;
+        if (low[vv] == index[vv]) {
+          while (true) {
+            const int w = stack.back();
+            stack.pop_back();
+            on_stack[w] = 0;
+            comp[w] = ncomp;
+            if (w == vv) break;
+          }
+          ++ncomp;
+        }
+        call.pop_back();
+        if (!call.empty()) low[call.back().first] = std::min(low[call.back().first], low[vv]);
+      }
+    }
+  }
+  std::vector<int> size(ncomp, 0);
+  for (int v = 0; v < N; ++v) ++size[comp[v]];
+  const int best = ncomp ? static_cast<int>(std::max_element(size.begin(), size.end()) - size.begin()) : -1;
+  alive.assign(N, 0);
+  for (int v = 0; v < N; ++v) alive[v] = comp[v] == best;
+  scc_size = best >= 0 ? size[best] : 0;
+  transitions = 0;
+  for (int v = 0; v < N; ++v) {
+    auto& es = edges[v];
+    if (!alive[v]) {
+      es.clear();
+      continue;
+    }
+    es.erase(std::remove_if(es.begin(), es.end(), [&](const GraphEdge& e) { return !alive[e.to]; }), es.end());
+    for (const auto& e : es) transitions += e.kind == EdgeKind::Transition;
+  }
+}
+
+// ------------------------------------------------------------------------------------------ walker
+GraphWalker::GraphWalker(const MotionGraph& g, uint64_t seed, const std::string& start_clip)
+    : g_(&g), rng_(seed) {
+  clip_ = std::max(0, g.clip_index(start_clip));
+}
+
+double GraphWalker::uniform() { return static_cast<double>(rng_() >> 11) * (1.0 / 9007199254740992.0); }
+
+const std::string& GraphWalker::current_clip() const { return g_->clips[clip_].name; }
+
+void GraphWalker::take_edge(int from_node, const GraphEdge& e) {
+  const GraphNode& to = g_->nodes[e.to];
+  if (e.kind == EdgeKind::Transition) {
+    const double over = time_ - g_->frame_time(g_->nodes[from_node].frame);
+    blend_.active = true;
+    blend_.clip = clip_;
+    blend_.time = time_;
+    blend_.T = T_;
+    blend_.elapsed = over;
+    blend_.duration = e.blend;
+    T_ = T_.then(e.align);
+    prev_clip_ = -1;
+    clip_ = to.clip;
+    frame_ = e.dst_start_frame;
+    time_ = g_->frame_time(e.dst_start_frame) + over;
+    // the frames inside the blend are walked normally (frame_ advances with time_)
+  } else if (e.kind == EdgeKind::Continuation || e.kind == EdgeKind::Knockdown) {
+    const double over = std::max(0.0, time_ - g_->clips[clip_].duration());
+    prev_clip_ = clip_;
+    prev_T_ = T_;
+    T_ = T_.then(e.align);
+    clip_ = to.clip;
+    frame_ = 0;
+    time_ = over;
+  }
+}
+
+void GraphWalker::decide() {
+  // Called whenever frame_ changes (and at clip ends). Takes at most one non-Next edge.
+  const int v = current_node();
+  const auto& es = g_->edges[v];
+  const bool at_end = frame_ == g_->frame_count[clip_] - 1 && time_ >= g_->clips[clip_].duration();
+  if (!plan_.empty()) {
+    const GraphNode& pf = g_->nodes[plan_.front().from_node];
+    if (pf.clip == clip_ && pf.frame < frame_) {  // went past it (should not happen): replan
+      plan_.clear();
+      if (!plan_target_.empty()) plan_to(plan_target_);
+    }
+  }
+  if (!plan_.empty()) {
+    const Step s = plan_.front();
+    if (s.from_node == v) {
+      const GraphEdge& e = es[s.edge];
+      if (e.kind == EdgeKind::Continuation ? at_end : !blend_.active) {
+        plan_.erase(plan_.begin());
+        take_edge(v, e);
+        return;
+      }
+      if (e.kind != EdgeKind::Continuation) {  // missed (blending): replan from the next frame
+        plan_.clear();
+        if (!plan_target_.empty()) plan_to(plan_target_);
+        return;
+      }
+    }
+  }
+  if (at_end) {
+    std::vector<int> cont;
+    for (size_t i = 0; i < es.size(); ++i)
+      if (es[i].kind == EdgeKind::Continuation) cont.push_back(static_cast<int>(i));
+    if (cont.empty()) return;  // cannot happen in a pruned graph
+    std::vector<int> self, other;
+    for (int i : cont) (g_->nodes[es[i].to].clip == clip_ ? self : other).push_back(i);
+    const std::vector<int>& pool =
+        self.empty() || other.empty() ? cont : (uniform() < loop_probability ? self : other);
+    const int pick = pool[std::min(pool.size() - 1, static_cast<size_t>(uniform() * pool.size()))];
+    plan_.clear();
+    take_edge(v, es[pick]);
+    if (!plan_target_.empty()) plan_to(plan_target_);
+    return;
+  }
+  if (!plan_.empty() || blend_.active) return;
+  std::vector<int> tr;
+  for (size_t i = 0; i < es.size(); ++i)
+    if (es[i].kind == EdgeKind::Transition) tr.push_back(static_cast<int>(i));
+  if (tr.empty()) return;
+  if (uniform() >= transition_probability) return;
+  const int pick = tr[std::min(tr.size() - 1, static_cast<size_t>(uniform() * tr.size()))];
+  take_edge(v, es[pick]);
+}
+
+PoseSample GraphWalker::tick(double dt) {
+  time_ += dt;
+  if (blend_.active) {
+    blend_.time += dt;
+    blend_.elapsed += dt;
+    if (blend_.elapsed >= blend_.duration) blend_.active = false;
+  }
+  for (int guard = 0; guard < 1000; ++guard) {
+    const int n = g_->frame_count[clip_];
+    const Clip& c = g_->clips[clip_];
+    if (frame_ + 1 < n && time_ >= g_->frame_time(frame_ + 1)) {
+      ++frame_;
+      decide();
+      continue;
+    }
+    if (frame_ == n - 1 && time_ >= c.duration()) {
+      const int before = current_node();
+      decide();
+      if (current_node() == before) break;  // no continuation (not expected)
+      // landed on frame 0 of the next clip: give it a decision too
+      decide();
+      continue;
+    }
+    break;
+  }
+  constexpr double h = 1e-4;
+  PoseSample s;
+  s.pose = world_pose_at(0.0);
+  const Pose a = world_pose_at(-h), b = world_pose_at(h);
+  s.root_velocity = (b.root_position - a.root_position) / (2 * h);
+  s.angular_velocity.resize(s.pose.rotation.size());
+  for (size_t i = 0; i < s.pose.rotation.size(); ++i)
+    s.angular_velocity[i] = angular_velocity_between(a.rotation[i], b.rotation[i], 2 * h);
+  return s;
+}
+
+Pose GraphWalker::world_pose_at(double off) const {
+  const Clip& c = g_->clips[clip_];
+  // within the current clip, time is clamped to the clip (the walk continues in the next clip);
+  // just after a continuation, negative offsets look back into the clip that was left
+  Pose cur;
+  if (time_ + off < 0.0 && prev_clip_ >= 0) {
+    const Clip& pc = g_->clips[prev_clip_];
+    cur = to_world(sample_clip_pose(pc, std::max(0.0, pc.duration() + time_ + off)), prev_T_);
+  } else {
+    cur = to_world(sample_clip_pose(c, c.loop ? time_ + off : std::clamp(time_ + off, 0.0, c.duration())), T_);
+  }
+  if (!blend_.active) return cur;
+  const Clip& ca = g_->clips[blend_.clip];
+  const Pose pa = to_world(sample_clip_pose(ca, ca.loop ? blend_.time + off : std::clamp(blend_.time + off, 0.0, ca.duration())), blend_.T);
+  const double w = ease((blend_.elapsed + off) / blend_.duration);
+  return blend_pose(pa, cur, w);
+}
+
+bool GraphWalker::plan_to(const std::vector<char>& target) {
+  plan_.clear();
+  const int N = static_cast<int>(g_->nodes.size());
+  const int src = current_node();
+  if (target[src]) return true;
+  std::vector<double> dist(N, std::numeric_limits<double>::infinity());
+  std::vector<std::pair<int, int>> prev(N, {-1, -1});
+  using QE = std::pair<double, int>;
+  std::priority_queue<QE, std::vector<QE>, std::greater<QE>> pq;
+  dist[src] = 0;
+  pq.push({0.0, src});
+  int found = -1;
+  const int k1 = std::max(1, g_->options.window - 1);
+  while (!pq.empty()) {
+    auto [d, v] = pq.top();
+    pq.pop();
+    if (d > dist[v]) continue;
+    if (target[v]) {
+      found = v;
+      break;
+    }
+    const auto& es = g_->edges[v];
+    for (size_t i = 0; i < es.size(); ++i) {
+      const GraphEdge& e = es[i];
+      if (e.kind == EdgeKind::Knockdown || !g_->alive[e.to]) continue;
+      if (v == src && e.kind == EdgeKind::Transition) continue;  // src's decision is already made
+      const double w = e.kind == EdgeKind::Transition ? k1 : 1.0;
+      if (d + w < dist[e.to]) {
+        dist[e.to] = d + w;
+        prev[e.to] = {v, static_cast<int>(i)};
+        pq.push({d + w, e.to});
+      }
+    }
+  }
+  if (found < 0) return false;
+  std::vector<Step> rev;
+  for (int v = found; v != src;) {
+    const auto [p, ei] = prev[v];
+    if (g_->edges[p][ei].kind != EdgeKind::Next) rev.push_back({p, ei});
+    v = p;
+  }
+  plan_.assign(rev.rbegin(), rev.rend());
+  return true;
+}
+
+bool GraphWalker::request_tag(const std::string& tag) {
+  std::vector<char> target(g_->nodes.size(), 0);
+  bool any = false;
+  for (size_t c = 0; c < g_->clips.size(); ++c) {
+    if (!g_->clips[c].has_tag(tag)) continue;
+    const int n = g_->frame_count[c];
+    for (int f = 0; f <= std::max(0, (n - 1) / 4); ++f)
+      if (g_->alive[g_->node(static_cast<int>(c), f)]) target[g_->node(static_cast<int>(c), f)] = any = true;
+  }
+  if (!any) return false;
+  plan_target_ = target;
+  const bool ok = plan_to(target);
+  if (ok && plan_.empty()) plan_target_.clear();  // already there
+  return ok;
+}
+
+bool GraphWalker::request_clip(const std::string& name) {
+  const int c = g_->clip_index(name);
+  if (c < 0) return false;
+  std::vector<char> target(g_->nodes.size(), 0);
+  bool any = false;
+  const int n = g_->frame_count[c];
+  for (int f = 0; f <= std::max(0, (n - 1) / 4); ++f)
+    if (g_->alive[g_->node(c, f)]) target[g_->node(c, f)] = any = true;
+  if (!any) return false;
+  plan_target_ = target;
+  const bool ok = plan_to(target);
+  if (ok && plan_.empty()) plan_target_.clear();
+  return ok;
+}
+
+bool GraphWalker::force_clip(const std::string& name) {
+  const int b = g_->clip_index(name);
+  if (b < 0) return false;
+  // align the target's first frame to the current (displayed) pose, in the current clip's space
+  const Clip& c = g_->clips[clip_];
+  const Pose cur = sample_clip_pose(c, c.loop ? time_ : std::clamp(time_, 0.0, c.duration()));
+  const Align2D rel = align_2d(g_->point_cloud(cur), g_->point_cloud(sample_clip_pose(g_->clips[b], 0.0)));
+  blend_.active = true;
+  blend_.clip = clip_;
+  blend_.time = time_;
+  blend_.T = T_;
+  blend_.elapsed = 0.0;
+  // Blend length: the graph's (k-1)/fps, longer when the poses are far apart so that the blend
+  // itself turns no joint faster than ~8 rad/s (smoothstep peaks at 1.5x the mean rate), <= 0.4 s.
+  const Pose target = sample_clip_pose(g_->clips[b], 0.0);
+  double far = 0.0;
+  for (size_t i = 1; i < cur.rotation.size(); ++i)
+    far = std::max(far, quat_log(cur.rotation[i].conjugate() * target.rotation[i]).norm());
+  blend_.duration = std::clamp(1.5 * far / 8.0, std::max(1, g_->options.window - 1) / g_->options.fps, 0.4);
+  T_ = T_.then(rel);
+  clip_ = b;
+  frame_ = 0;
+  time_ = 0.0;
+  prev_clip_ = -1;
+  plan_.clear();
+  plan_target_.clear();
+  return true;
+}
+
+// ------------------------------------------------------------------------------------------ reports
+nlohmann::json graph_report(const MotionGraph& g) {
+  nlohmann::json r;
+  const int C = static_cast<int>(g.clips.size());
+  std::vector<int> tr_out(C, 0), tr_in(C, 0), alive_frames(C, 0);
+  int n_next = 0, n_cont = 0, n_knock = 0, n_alive = 0;
+  for (size_t v = 0; v < g.nodes.size(); ++v) {
+    if (g.alive[v]) {
+      ++n_alive;
+      ++alive_frames[g.nodes[v].clip];
+    }
+    for (const auto& e : g.edges[v]) {
+      switch (e.kind) {
+        case EdgeKind::Next: ++n_next; break;
+        case EdgeKind::Continuation: ++n_cont; break;
+        case EdgeKind::Knockdown: ++n_knock; break;
+        case EdgeKind::Transition:
+          ++tr_out[g.nodes[v].clip];
+          ++tr_in[g.nodes[e.to].clip];
+          break;
+      }
+    }
+  }
+  std::set<std::string> tags_in, tags_all;
+  nlohmann::json clips = nlohmann::json::array();
+  for (int c = 0; c < C; ++c) {
+    for (const auto& t : g.clips[c].tags) {
+      tags_all.insert(t);
+      if (alive_frames[c] > 0) tags_in.insert(t);
+    }
+    clips.push_back({{"name", g.clips[c].name},
+                     {"tags", g.clips[c].tags},
+                     {"frames", g.frame_count[c]},
+                     {"frames_in_scc", alive_frames[c]},
+                     {"transitions_out", tr_out[c]},
+                     {"transitions_in", tr_in[c]},
+                     {"next", g.clips[c].next}});
+  }
+  std::vector<std::string> missing;
+  for (const auto& t : tags_all)
+    if (!tags_in.count(t)) missing.push_back(t);
+  r["clips"] = clips;
+  r["frames"] = static_cast<int>(g.nodes.size());
+  r["fps"] = g.options.fps;
+  r["window_frames"] = g.options.window;
+  r["edges"] = {{"next", n_next}, {"transitions", g.transitions}, {"continuations", n_cont}, {"knockdown", n_knock}};
+  r["transitions_before_prune"] = g.transitions_before_prune;
+  r["window_pairs_compared"] = g.candidate_pairs;
+  r["mean_window_rms_m"] = g.mean_rms;
+  r["scc"] = {{"frames", g.scc_size}, {"frames_removed", static_cast<int>(g.nodes.size()) - n_alive},
+              {"tags", std::vector<std::string>(tags_in.begin(), tags_in.end())},
+              {"tags_missing", missing}};
+  r["threshold"] = {{"rms_m", g.options.threshold_rms},
+                    {"why", "per-point RMS of the aligned 5-frame point-cloud windows; below ~4 cm a "
+                            "0.13 s slerp blend with the root aligned is not visible and stays within what "
+                            "the servos track, while distinct boxing poses differ by 10-30 cm"},
+                    {"fraction_of_mean", g.mean_rms > 0 ? g.options.threshold_rms / g.mean_rms : 0.0}};
+  return r;
+}
+
+std::string graph_dot(const MotionGraph& g) {
+  std::map<std::pair<int, int>, int> tr, cont;
+  for (size_t v = 0; v < g.nodes.size(); ++v)
+    for (const auto& e : g.edges[v]) {
+      const auto key = std::make_pair(g.nodes[v].clip, g.nodes[e.to].clip);
+      if (e.kind == EdgeKind::Transition) ++tr[key];
+      if (e.kind == EdgeKind::Continuation) ++cont[key];
+    }
+  std::ostringstream os;
+  os << "digraph motion_graph {\n  rankdir=LR;\n  node [shape=box, style=rounded];\n";
+  for (size_t c = 0; c < g.clips.size(); ++c) {
+    std::string tags;
+    for (const auto& t : g.clips[c].tags) tags += (tags.empty() ? "" : ",") + t;
+    os << "  \"" << g.clips[c].name << "\" [label=\"" << g.clips[c].name << "\\n" << tags << " ("
+       << g.frame_count[c] << " f)\"];\n";
+  }
+  for (const auto& [key, n] : tr)
+    os << "  \"" << g.clips[key.first].name << "\" -> \"" << g.clips[key.second].name << "\" [label=\"" << n
+       << "\", weight=" << n << ", penwidth=" << (1.0 + std::log2(1.0 + n)) << "];\n";
+  for (const auto& [key, n] : cont)
+    os << "  \"" << g.clips[key.first].name << "\" -> \"" << g.clips[key.second].name
+       << "\" [style=dashed, label=\"next\"];\n";
+  os << "}\n";
+  return os.str();
+}
+
+}  // namespace eng::anim
