@@ -58,6 +58,7 @@ flags:
   --camera NAME          default | closeup | side | top
   --screenshot FILE.png  write the last frame
   --report FILE.json     write what ran: seed, seconds, frames, device, frame times, scenario results
+  --content DIR          the content folder (default: the repository's content/)
   --frames-dir DIR       headless: write each rendered frame as DIR/frame_NNNNN.png
   --render-every N       headless: render every Nth 60 Hz frame (default 0 = the last frame only)
   --overlay, --no-overlay   Dear ImGui overlay (window default on, headless default off)
@@ -138,7 +139,8 @@ eng::Result<Options> parse_cli(const std::vector<std::string>& args) {
       if (!v) return missing();
       if (!kServos.count(*v)) return bad("unknown servo '" + *v + "' (world, person, parent, parent-meathook)");
       o.servo = *v;
-    } else if (flag == "--screenshot" || flag == "--report" || flag == "--frames-dir" || flag == "--dot") {
+    } else if (flag == "--screenshot" || flag == "--report" || flag == "--frames-dir" || flag == "--dot" ||
+               flag == "--content") {
       auto v = value();
       if (!v || v->empty()) return missing();
       if (flag == "--screenshot") {
@@ -150,6 +152,8 @@ eng::Result<Options> parse_cli(const std::vector<std::string>& args) {
       } else if (flag == "--dot") {
         if (o.command != "graph") return bad("--dot belongs to 'boxing graph'");
         o.graph_dot = *v;
+      } else if (flag == "--content") {
+        o.content_dir = *v;
       } else {
         o.frames_dir = *v;
       }

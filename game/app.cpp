@@ -1,0 +1,286 @@
+#include "game/app.h"
+
+#include <GLFW/glfw3.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include "engine/platform/window.h"
+#include "engine/render/renderer.h"
+#include "game/scene_view.h"
+#include "game/world.h"
+
+namespace boxing {
+
+namespace fs = std::filesystem;
+using clock_type = std::chrono::steady_clock;
+
+namespace {
+
+struct FrameTimes {
+  std::vector<double> ms;
+  nlohmann::json summary() const {
+    if (ms.empty()) return {{"count", 0}};
+    std::vector<double> s = ms;
+    std::sort(s.begin(), s.end());
+    double sum = 0;
+    for (double x : s) sum += x;
+    return {{"count", s.size()},
+            {"mean_ms", sum / s.size()},
+            {"p50_ms", s[s.size() / 2]},
+            {"p95_ms", s[std::min(s.size() - 1, s.size() * 95 / 100)]},
+            {"max_ms", s.back()}};
+  }
+};
+
+eng::render::RendererConfig renderer_config(const Options& o) {
+  eng::render::RendererConfig c;
+  c.width = o.width;
+  c.height = o.height;
+  c.validation = o.validation;
+  c.vsync = o.vsync;
+  return c;
+}
+
+nlohmann::json base_report(const Options& o, const World& w, long frames, const eng::render::Renderer& r,
+                           const FrameTimes& sim, const FrameTimes& render, bool headless) {
+  nlohmann::json j = world_report(w);
+  j["seed"] = o.seed;
+  j["seconds"] = w.data.time;
+  j["frames"] = frames;
+  j["headless"] = headless;
+  j["width"] = o.width;
+  j["height"] = o.height;
+  j["device"] = r.device_name();
+  j["driver"] = r.driver_info();
+  j["validation"] = {{"active", r.validation_active()},
+                     {"errors", r.validation_errors()},
+                     {"warnings", r.validation_warnings()}};
+  j["frame_times"] = {{"simulate", sim.summary()}, {"render", render.summary()}};
+  return j;
+}
+
+eng::Result<void> write_report(const std::string& path, const nlohmann::json& j) {
+  if (path.empty()) return {};
+  if (auto parent = fs::path(path).parent_path(); !parent.empty()) fs::create_directories(parent);
+  std::ofstream f(path);
+  if (!f) return eng::make_error("boxing: cannot write report '" + path + "' (check the folder exists and is writable)");
+  f << j.dump(2) << "\n";
+  return {};
+}
+
+eng::Result<void> save_png(const eng::Image& img, const std::string& path) {
+  if (auto parent = fs::path(path).parent_path(); !parent.empty()) {
+    std::error_code ec;
+    fs::create_directories(parent, ec);
+  }
+  auto r = eng::write_png(img, path);
+  if (!r) return eng::make_error("boxing: cannot write '" + path + "': " + r.error());
+  return {};
+}
+
+}  // namespace
+
+eng::Result<HeadlessRun> run_headless(const Options& o) {
+  auto world = make_world(o);
+  if (!world) return eng::make_error(world.error());
+  World& w = **world;
+  auto renderer = eng::render::Renderer::create_headless(renderer_config(o));
+  if (!renderer) return eng::make_error("boxing: " + renderer.error());
+  eng::render::Renderer& r = **renderer;
+  const SceneView view = make_scene_view(w, r);
+
+  const double seconds = o.seconds > 0 ? o.seconds : 2.0;
+  const long frames = std::max(1L, std::lround(seconds * 60.0));
+  eng::render::FrameDesc f;
+  f.camera = camera_preset(o.camera, w);
+  f.overlay = o.overlay_given && o.overlay;
+  FrameTimes sim, render;
+  HeadlessRun out;
+  for (long frame = 1; frame <= frames; ++frame) {
+    const auto t0 = clock_type::now();
+    for (int s = 0; s < kStepsPerFrame; ++s) step_world(w);
+    sim.ms.push_back(std::chrono::duration<double, std::milli>(clock_type::now() - t0).count());
+    const bool last = frame == frames;
+    const bool every = o.render_every > 0 && frame % o.render_every == 0;
+    if (!last && !every) continue;
+    const auto t1 = clock_type::now();
+    fill_frame(w, view, f);
+    f.frame_ms = float(sim.ms.back());
+    f.overlay_lines = {"t = " + std::to_string(w.data.time) + " s", "scenario " + o.scenario};
+    if (auto ok = r.render(f); !ok) return eng::make_error("boxing: rendering failed: " + ok.error());
+    auto img = r.read_back();
+    if (!img) return eng::make_error("boxing: reading the frame back failed: " + img.error());
+    render.ms.push_back(std::chrono::duration<double, std::milli>(clock_type::now() - t1).count());
+    if (every && !o.frames_dir.empty()) {
+      char name[64];
+      std::snprintf(name, sizeof name, "frame_%05ld.png", frame);
+      if (auto ok = save_png(*img, (fs::path(o.frames_dir) / name).string()); !ok) return eng::make_error(ok.error());
+    }
+    if (last) out.image = std::move(*img);
+  }
+  out.report = base_report(o, w, frames, r, sim, render, true);
+  out.driver = r.device_name() + " / " + r.driver_info();
+  out.validation_errors = r.validation_errors();
+  out.validation_active = r.validation_active();
+  if (!o.screenshot.empty())
+    if (auto ok = save_png(out.image, o.screenshot); !ok) return eng::make_error(ok.error());
+  if (auto ok = write_report(o.report, out.report); !ok) return eng::make_error(ok.error());
+  return out;
+}
+
+namespace {
+
+// Orbit camera for the window: right-drag orbits, wheel zooms, C cycles the presets.
+struct OrbitCamera {
+  glm::vec3 target;
+  float yaw, pitch, dist;
+  void from(const eng::render::Camera& c) {
+    target = c.target;
+    const glm::vec3 d = c.eye - c.target;
+    dist = glm::length(d);
+    yaw = std::atan2(d.y, d.x);
+    pitch = std::asin(d.z / dist);
+  }
+  eng::render::Camera to(eng::render::Camera c) const {
+    c.target = target;
+    c.eye = target + dist * glm::vec3(std::cos(pitch) * std::cos(yaw), std::cos(pitch) * std::sin(yaw), std::sin(pitch));
+    return c;
+  }
+};
+
+int run_windowed(const Options& o) {
+  auto world = make_world(o);
+  if (!world) {
+    std::fprintf(stderr, "%s\n", world.error().c_str());
+    return 1;
+  }
+  World& w = **world;
+  eng::platform::WindowConfig wc;
+  wc.width = o.width;
+  wc.height = o.height;
+  wc.title = "Boxing";
+  auto window = eng::platform::Window::create(wc);
+  if (!window) {
+    std::fprintf(stderr, "boxing: %s\n", window.error().c_str());
+    return 1;
+  }
+  auto renderer = eng::render::Renderer::create_windowed(renderer_config(o), **window);
+  if (!renderer) {
+    std::fprintf(stderr, "boxing: %s\n", renderer.error().c_str());
+    return 1;
+  }
+  eng::render::Renderer& r = **renderer;
+  eng::platform::Window& win = **window;
+  SceneView view = make_scene_view(w, r);
+  const char* cameras[] = {"default", "closeup", "side", "top"};
+  int camera_index = 0;
+  for (int i = 0; i < 4; ++i)
+    if (o.camera == cameras[i]) camera_index = i;
+  eng::render::FrameDesc f;
+  OrbitCamera orbit;
+  orbit.from(camera_preset(cameras[camera_index], w));
+  bool overlay = o.overlay_given ? o.overlay : true;
+  FrameTimes sim, render;
+  long frames = 0;
+  int shots = 0;
+  double accumulator = 0.0;
+  auto last = clock_type::now();
+  glm::dvec2 last_mouse = win.mouse_position();
+  while (!win.should_close()) {
+    win.poll_events();
+    if (win.key_pressed(GLFW_KEY_ESCAPE)) win.request_close();
+    if (win.key_pressed(GLFW_KEY_H)) overlay = !overlay;
+    if (win.key_pressed(GLFW_KEY_G)) view.ghost = !view.ghost;
+    if (win.key_pressed(GLFW_KEY_C)) {
+      camera_index = (camera_index + 1) % 4;
+      orbit.from(camera_preset(cameras[camera_index], w));
+    }
+    const glm::dvec2 mouse = win.mouse_position();
+    if (win.mouse_button_down(GLFW_MOUSE_BUTTON_RIGHT)) {
+      orbit.yaw -= float(mouse.x - last_mouse.x) * 0.006f;
+      orbit.pitch = std::clamp(orbit.pitch + float(mouse.y - last_mouse.y) * 0.006f, -0.1f, 1.5f);
+    }
+    last_mouse = mouse;
+    orbit.dist = std::clamp(orbit.dist * std::pow(0.9f, float(win.scroll_delta().y)), 1.0f, 20.0f);
+
+    // Fixed 60 Hz simulation frames, as many as real time asks for (at most 4 per rendered frame, so a slow
+    // machine runs in slow motion instead of spiralling).
+    const auto now = clock_type::now();
+    accumulator = std::min(accumulator + std::chrono::duration<double>(now - last).count(), 4.0 / 60.0);
+    last = now;
+    while (accumulator >= 1.0 / 60.0) {
+      const auto t0 = clock_type::now();
+      for (int s = 0; s < kStepsPerFrame; ++s) step_world(w);
+      sim.ms.push_back(std::chrono::duration<double, std::milli>(clock_type::now() - t0).count());
+      accumulator -= 1.0 / 60.0;
+      ++frames;
+    }
+    if (o.seconds > 0 && w.data.time >= o.seconds) win.request_close();
+    if (win.minimized()) continue;
+    const auto t1 = clock_type::now();
+    fill_frame(w, view, f);
+    f.camera = orbit.to(camera_preset(cameras[camera_index], w));
+    f.overlay = overlay;
+    f.frame_ms = render.ms.empty() ? 0.0f : float(render.ms.back());
+    f.overlay_lines = {"t = " + std::to_string(w.data.time).substr(0, 6) + " s   scenario " + o.scenario,
+                       "F12 screenshot  H overlay  G ghost  C camera  Esc quit"};
+    if (auto ok = r.render(f); !ok) {
+      std::fprintf(stderr, "boxing: rendering failed: %s\n", ok.error().c_str());
+      return 1;
+    }
+    render.ms.push_back(std::chrono::duration<double, std::milli>(clock_type::now() - t1).count());
+    if (win.key_pressed(GLFW_KEY_F12) || (!o.screenshot.empty() && win.should_close())) {
+      std::string path = o.screenshot;
+      if (path.empty() || !win.should_close()) {
+        char name[64];
+        std::snprintf(name, sizeof name, "out/screenshot_%03d.png", ++shots);
+        path = name;
+      }
+      auto img = r.read_back();
+      if (img && save_png(*img, path).ok()) std::printf("boxing: screenshot saved to %s\n", path.c_str());
+      else std::fprintf(stderr, "boxing: screenshot failed\n");
+    }
+  }
+  if (auto ok = write_report(o.report, base_report(o, w, frames, r, sim, render, false)); !ok) {
+    std::fprintf(stderr, "%s\n", ok.error().c_str());
+    return 1;
+  }
+  if (r.validation_errors() > 0) {
+    std::fprintf(stderr, "boxing: %d Vulkan validation errors (see above)\n", r.validation_errors());
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace
+
+int run(const Options& o) {
+  bool headless = o.headless;
+  if (!headless && !eng::platform::display_available()) {
+    std::fprintf(stderr, "boxing: no display found (DISPLAY is not set or the X server does not answer); "
+                         "running headless instead (pass --headless to choose it, or start an X server / Xvfb)\n");
+    headless = true;
+  }
+  if (!headless) return run_windowed(o);
+  Options ho = o;
+  ho.headless = true;
+  auto run = run_headless(ho);
+  if (!run) {
+    std::fprintf(stderr, "%s\n", run.error().c_str());
+    return 1;
+  }
+  if (!o.screenshot.empty()) std::printf("boxing: last frame written to %s\n", o.screenshot.c_str());
+  if (!o.report.empty()) std::printf("boxing: report written to %s\n", o.report.c_str());
+  if (run->validation_errors > 0) {
+    std::fprintf(stderr, "boxing: %d Vulkan validation errors (see above)\n", run->validation_errors);
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace boxing

@@ -1,0 +1,86 @@
+#include "game/arena.h"
+
+#include <cmath>
+
+#include "game/rng.h"
+
+namespace boxing {
+
+double Arena::top_at(double x, double y) const {
+  double top = 0.0;
+  for (const Crate& c : crates) {
+    if (std::abs(x - c.center.x()) <= c.half_extents.x() && std::abs(y - c.center.y()) <= c.half_extents.y())
+      top = std::max(top, c.center.z() + c.half_extents.z());
+  }
+  return top;
+}
+
+Arena make_arena(uint64_t seed, double min_step) {
+  Rng rng(seed * 0x9E3779B97F4A7C15ull + 17);
+  Arena a;
+  constexpr int kNx = 6, kNy = 4;  // 3 m x 2 m platform
+  const double cell = a.cell;
+  const double x0 = -0.5 * kNx * cell, y0 = -0.5 * kNy * cell;
+  double height[kNx][kNy];
+  for (int i = 0; i < kNx; ++i)
+    for (int j = 0; j < kNy; ++j) height[i][j] = 0.30 + rng.uniform(-0.10, 0.14);
+
+  // Boxers face each other along X: boxer 0 at -X facing +X, boxer 1 at +X facing -X.
+  const double sx = 0.5 * kBoxerSeparation;
+  a.stances[0] = Stance{{-sx, 0.0}, 0.0, 0, 0};
+  a.stances[1] = Stance{{sx, 0.0}, M_PI, 0, 0};
+  auto cell_of = [&](double x, double y, int& i, int& j) {
+    i = static_cast<int>(std::floor((x - x0) / cell));
+    j = static_cast<int>(std::floor((y - y0) / cell));
+  };
+  for (Stance& s : a.stances) {
+    const double c = std::cos(s.heading), sn = std::sin(s.heading);
+    auto foot = [&](double fwd, double left, int& i, int& j) {
+      cell_of(s.position.x() + c * fwd - sn * left, s.position.y() + sn * fwd + c * left, i, j);
+    };
+    int li, lj, ri, rj;
+    foot(kStanceHalfLength, kStanceHalfWidth, li, lj);
+    foot(-kStanceHalfLength, -kStanceHalfWidth, ri, rj);
+    // Enforce the step between the two feet (the "one foot at least 10 cm higher"), keeping the random
+    // sign of which foot is higher.
+    double& hl = height[li][lj];
+    double& hr = height[ri][rj];
+    if (std::abs(hl - hr) < min_step) {
+      const double mid = 0.5 * (hl + hr);
+      const double sign = rng.uniform() < 0.5 ? -1.0 : 1.0;
+      hl = mid + sign * 0.5 * (min_step + 0.02);
+      hr = mid - sign * 0.5 * (min_step + 0.02);
+    }
+  }
+
+  constexpr double kGap = 0.006;  // visible seams between neighbouring crates
+  for (int i = 0; i < kNx; ++i) {
+    for (int j = 0; j < kNy; ++j) {
+      const double h = height[i][j];
+      const double cx = x0 + (i + 0.5) * cell, cy = y0 + (j + 0.5) * cell;
+      const float tone = static_cast<float>(rng.uniform(0.85, 1.1));
+      const Eigen::Vector3f wood(0.42f * tone, 0.26f * tone, 0.13f * tone);
+      // Tall columns are two crates stacked (a lower one and a slightly smaller one on top); all static.
+      if (h > 0.34) {
+        const double lower = 0.16 + rng.uniform(0.0, 0.04);
+        a.crates.push_back(Crate{{cx, cy, 0.5 * lower}, {0.5 * cell - kGap, 0.5 * cell - kGap, 0.5 * lower}, wood});
+        const double shrink = rng.uniform(0.0, 0.02);
+        a.crates.push_back(Crate{{cx, cy, lower + 0.5 * (h - lower)},
+                                 {0.5 * cell - kGap - shrink, 0.5 * cell - kGap - shrink, 0.5 * (h - lower)},
+                                 Eigen::Vector3f(wood.x() * 1.08f, wood.y() * 1.05f, wood.z())});
+      } else {
+        a.crates.push_back(Crate{{cx, cy, 0.5 * h}, {0.5 * cell - kGap, 0.5 * cell - kGap, 0.5 * h}, wood});
+      }
+    }
+  }
+  for (Stance& s : a.stances) {
+    const double c = std::cos(s.heading), sn = std::sin(s.heading);
+    s.lead_top = a.top_at(s.position.x() + c * kStanceHalfLength - sn * kStanceHalfWidth,
+                          s.position.y() + sn * kStanceHalfLength + c * kStanceHalfWidth);
+    s.rear_top = a.top_at(s.position.x() - c * kStanceHalfLength + sn * kStanceHalfWidth,
+                          s.position.y() - sn * kStanceHalfLength - c * kStanceHalfWidth);
+  }
+  return a;
+}
+
+}  // namespace boxing

@@ -1,0 +1,44 @@
+#pragma once
+// The arena: a platform of uneven wooden crates the two boxers stand on, laid out from the seed.
+// Plain data; the game turns it into static physics geoms and render instances.
+#include <Eigen/Core>
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace boxing {
+
+struct Crate {
+  Eigen::Vector3d center;
+  Eigen::Vector3d half_extents;
+  Eigen::Vector3f color;  // linear RGB, a wood tone
+};
+
+// Where a boxer stands: pelvis position over the stance, heading (yaw, rad; 0 = facing +X), and the heights of
+// the tops under the lead (left) and rear (right) foot.
+struct Stance {
+  Eigen::Vector2d position;
+  double heading = 0.0;
+  double lead_top = 0.0;
+  double rear_top = 0.0;
+};
+
+struct Arena {
+  std::vector<Crate> crates;
+  std::array<Stance, 2> stances;
+  double cell = 0.5;  // crate footprint (m)
+  // Height of the crate top under the world point (x, y); 0 (the floor) outside the platform.
+  double top_at(double x, double y) const;
+};
+
+// Columns of one or two stacked crates on a grid; the two cells under each boxer's feet differ by at least
+// min_step metres so every boxer stands with one foot higher than the other.
+Arena make_arena(uint64_t seed, double min_step = 0.10);
+
+// Stance geometry shared by the arena layout and the boxer placement (orthodox stance, facing +X at heading 0):
+// the lead (left) foot is ahead and to the left of the pelvis, the rear foot behind and to the right.
+inline constexpr double kStanceHalfLength = 0.20;  // m along the heading
+inline constexpr double kStanceHalfWidth = 0.12;   // m sideways
+inline constexpr double kBoxerSeparation = 1.20;   // pelvis to pelvis (m)
+
+}  // namespace boxing

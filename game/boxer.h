@@ -1,0 +1,70 @@
+#pragma once
+// A boxer: its bodies in the physics model, its pose source (a keyframed clip, later the motion graph), the servo
+// that turns the desired pose into torques, and the measurements the scenarios report.
+#include <Eigen/Geometry>
+#include <string>
+#include <vector>
+
+#include "engine/anim/clip.h"
+#include "engine/assets/character.h"
+#include "engine/control/controller.h"
+#include "engine/control/inertial_servo.h"
+#include "engine/physics/data.h"
+#include "engine/physics/model.h"
+#include "game/arena.h"
+#include "game/character_builder.h"
+#include "game/stance_ik.h"
+
+namespace boxing {
+
+struct BoxerMetrics {
+  bool fell = false;
+  double fell_at = -1.0;
+  std::string fell_reason;
+  double time_upright = 0.0;
+  double max_com_speed = 0.0;
+  double standing_height = 0.0;  // pelvis above its support at the start
+  std::vector<double> err_sq_sum;  // per bone, world orientation tracking error^2 (rad^2)
+  long samples = 0;
+  double ground_contact_time = 0.0;  // continuous time a non-foot, non-shank link touches crates / floor
+  Eigen::Vector3d last_com = Eigen::Vector3d::Zero();
+  bool have_com = false;
+};
+
+struct Boxer {
+  int index = 0;
+  Eigen::Vector3f team_color{1, 0, 0};
+  Stance stance;
+  CharacterBodies bodies;
+  eng::control::ServoSpace space = eng::control::ServoSpace::World;
+  eng::control::ServoGains gains;
+  eng::control::ControlBody control_body;
+  eng::control::MeathookParams hook;
+  eng::control::ServoState servo;
+  bool limp = false;  // a ragdoll: no servo at all
+
+  const eng::anim::Clip* clip = nullptr;  // keyframed pose source
+  double clip_time = 0.0;
+  eng::anim::PoseSample desired;          // world-placed desired pose (after fitting the legs to the crates)
+  std::vector<Eigen::Quaterniond> W_a, W_d_metric;
+  std::vector<Eigen::Vector3d> omega_a;
+  BoxerMetrics metrics;
+};
+
+eng::control::ServoSpace servo_space_from_name(const std::string& name);
+const char* servo_space_name(eng::control::ServoSpace s);
+
+// The desired pose of the clip at `t`, placed on the boxer's stance (heading, crate heights).
+void boxer_desired_pose(const eng::assets::CharacterDesc& desc, const Arena& arena, const Boxer& b, double t,
+                        eng::anim::PoseSample& out);
+
+// Reads the boxer's actual world orientations / angular velocities, runs its servo and applies the torques
+// (+tau on each bone, -tau on its parent; root help on the pelvis without reaction).
+void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const eng::assets::CharacterDesc& desc,
+                   const Arena& arena, Boxer& b, double dt);
+
+// Updates fell / upright time / com speed / tracking error after a physics step.
+void boxer_measure(const eng::physics::Model& m, const eng::physics::Data& d, const eng::assets::CharacterDesc& desc,
+                   Boxer& b, double dt);
+
+}  // namespace boxing

@@ -1,0 +1,34 @@
+#pragma once
+// What the player sees: the world's bodies as render instances (crates, boxers' glTF meshes in team colours,
+// loose crates), the optional ghost of the desired pose, debug lines, and the camera presets.
+#include <vector>
+
+#include "engine/render/frame.h"
+#include "engine/render/renderer.h"
+#include "game/world.h"
+
+namespace boxing {
+
+struct BonePart {
+  int bone = 0;
+  eng::render::MeshId mesh = 0;
+  eng::render::Material material;
+  bool team = false;  // takes the boxer's team colour
+};
+
+struct SceneView {
+  std::vector<eng::render::MeshId> crate_mesh;  // per arena crate
+  std::vector<eng::render::MeshId> loose_mesh;  // per loose body
+  std::vector<BonePart> boxer_parts;
+  bool ghost = false;
+};
+
+// Uploads every mesh the world needs (once).
+SceneView make_scene_view(const World& w, eng::render::Renderer& r);
+
+eng::render::Camera camera_preset(const std::string& name, const World& w);
+
+// Fills the frame (instances, ghosts, debug lines) from the current physics state.
+void fill_frame(const World& w, const SceneView& v, eng::render::FrameDesc& f);
+
+}  // namespace boxing

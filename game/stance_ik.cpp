@@ -1,0 +1,58 @@
+#include "game/stance_ik.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace boxing {
+
+void pose_fk(const eng::anim::Skeleton& skel, const eng::anim::Pose& pose, std::vector<Eigen::Quaterniond>& W,
+             std::vector<Eigen::Vector3d>& P) {
+  const int n = skel.size();
+  W.resize(n);
+  P.resize(n);
+  for (int i = 0; i < n; ++i) {
+    if (i == 0) {
+      W[0] = pose.rotation[0].normalized();
+      P[0] = pose.root_position;
+    } else {
+      const int p = skel.parent[i];
+      W[i] = (W[p] * pose.rotation[i]).normalized();
+      P[i] = P[p] + W[p] * skel.offset[i];
+    }
+  }
+}
+
+void fit_legs_to_ground(const eng::anim::Skeleton& skel, const LegBones legs[2], double base_top,
+                        const std::function<double(double, double)>& ground, eng::anim::Pose& pose) {
+  std::vector<Eigen::Quaterniond> W;
+  std::vector<Eigen::Vector3d> P;
+  pose_fk(skel, pose, W, P);
+  for (int k = 0; k < 2; ++k) {
+    const LegBones& L = legs[k];
+    const Eigen::Vector3d hip = P[L.thigh];
+    Eigen::Vector3d ankle = P[L.foot];
+    // The foot's sole is flat under the ankle: sample the ground at the middle of the foot.
+    const Eigen::Vector3d mid = ankle + W[L.foot] * Eigen::Vector3d(0.05, 0.0, 0.0);
+    ankle.z() += ground(mid.x(), mid.y()) - base_top;
+
+    const Eigen::Vector3d thigh_off = skel.offset[L.shank], shank_off = skel.offset[L.foot];
+    const double l1 = thigh_off.norm(), l2 = shank_off.norm();
+    const double d = std::clamp((ankle - hip).norm(), std::abs(l1 - l2) + 1e-3, l1 + l2 - 1e-3);
+    // Knee flexion from the law of cosines: the interior angle phi, flexion = pi - phi (hinge about +Y).
+    const double cos_phi = std::clamp((l1 * l1 + l2 * l2 - d * d) / (2 * l1 * l2), -1.0, 1.0);
+    const double flex = M_PI - std::acos(cos_phi);
+    const Eigen::Quaterniond knee(Eigen::AngleAxisd(flex, Eigen::Vector3d::UnitY()));
+
+    // Re-aim the thigh: the smallest world rotation taking the current hip->ankle direction to the target's.
+    const Eigen::Vector3d current = W[L.thigh] * (thigh_off + knee * shank_off);
+    const Eigen::Quaterniond aim = Eigen::Quaterniond::FromTwoVectors(current, ankle - hip);
+    const Eigen::Quaterniond thigh_w = (aim * W[L.thigh]).normalized();
+    const Eigen::Quaterniond shank_w = (thigh_w * knee).normalized();
+    const int pelvis = skel.parent[L.thigh];
+    pose.rotation[L.thigh] = (W[pelvis].conjugate() * thigh_w).normalized();
+    pose.rotation[L.shank] = knee;
+    pose.rotation[L.foot] = (shank_w.conjugate() * W[L.foot]).normalized();
+  }
+}
+
+}  // namespace boxing

@@ -1,0 +1,233 @@
+#include "game/world.h"
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+
+#include "engine/control/composite_inertia.h"
+#include "engine/physics/dynamics.h"
+#include "engine/physics/step.h"
+#include "game/rng.h"
+
+namespace boxing {
+
+namespace fs = std::filesystem;
+using eng::physics::Geom;
+using eng::physics::Shape;
+using eng::physics::ShapeType;
+
+std::string content_dir(const Options& o) {
+  if (!o.content_dir.empty()) return o.content_dir;
+  if (fs::exists("content/boxer/boxer.gltf")) return "content";
+  return BOXING_CONTENT_DIR;
+}
+
+namespace {
+
+constexpr uint32_t kStaticGroup = 1u;
+
+void add_static_arena(World& w) {
+  Geom floor;
+  floor.shape.type = ShapeType::Plane;
+  floor.body = 0;
+  floor.friction = 0.9;
+  floor.group = kStaticGroup;
+  w.model.add_geom(floor);
+  for (const Crate& c : w.arena.crates) {
+    Geom g;
+    g.shape.type = ShapeType::Box;
+    g.shape.half_extents = c.half_extents;
+    g.body = 0;
+    g.local.p = c.center;
+    g.friction = 0.9;
+    g.group = kStaticGroup;
+    w.model.add_geom(g);
+  }
+}
+
+// Per-bone scalar inertia that scales the servo gains (composite inertia of the bone's subtree about its joint).
+eng::control::ControlBody control_body_of(const eng::assets::CharacterDesc& desc) {
+  std::vector<double> mass;
+  std::vector<Eigen::Vector3d> com;
+  std::vector<Eigen::Matrix3d> inertia;
+  for (const auto& b : desc.bones) {
+    mass.push_back(b.mass);
+    com.push_back(b.com);
+    inertia.push_back(b.inertia_diag.asDiagonal());
+  }
+  eng::control::ControlBody cb;
+  cb.I_eff = eng::control::composite_inertias(desc.skeleton, mass, com, inertia);
+  cb.total_mass = desc.total_mass();
+  return cb;
+}
+
+void add_boxer(World& w, int index, const Eigen::Vector3f& color, bool limp, const Stance& stance) {
+  Boxer b;
+  b.index = index;
+  b.team_color = color;
+  b.stance = stance;
+  b.limp = limp;
+  const uint32_t group = 2u << index;
+  b.bodies = add_character(w.model, w.boxer_desc, "b" + std::to_string(index) + "_", group, 0xffffffffu, false);
+  b.space = servo_space_from_name(w.options.servo);
+  b.gains.omega_n = 14.0;
+  b.gains.zeta = 1.0;
+  b.gains.stable_pd = true;
+  b.gains.dt = kPhysicsDt;
+  b.control_body = control_body_of(w.boxer_desc);
+  b.servo.resize(w.boxer_desc.skeleton.size());
+  const int guard = eng::anim::find_clip(w.clips, "guard");
+  b.clip = &w.clips[guard >= 0 ? guard : 0];
+  w.boxers.push_back(std::move(b));
+}
+
+void place_boxer(World& w, Boxer& b) {
+  boxer_desired_pose(w.boxer_desc, w.arena, b, 0.0, b.desired);
+  set_character_pose(w.model, w.data, b.bodies, w.boxer_desc, b.desired.pose.root_position, b.desired.pose.rotation);
+}
+
+}  // namespace
+
+eng::Result<std::unique_ptr<World>> make_world(const Options& o) {
+  auto w = std::make_unique<World>();
+  w->options = o;
+  const std::string dir = content_dir(o);
+  auto scene = eng::assets::load_gltf(dir + "/boxer/boxer.gltf");
+  if (!scene) return eng::make_error("boxing: " + scene.error());
+  w->boxer_scene = std::move(*scene);
+  auto desc = eng::assets::load_character(w->boxer_scene);
+  if (!desc) return eng::make_error("boxing: " + desc.error());
+  w->boxer_desc = std::move(*desc);
+  auto clips = eng::anim::load_clips(dir + "/clips/boxing_clips.gltf", w->boxer_desc.skeleton);
+  if (!clips) return eng::make_error("boxing: " + clips.error());
+  w->clips = std::move(*clips);
+  if (w->clips.empty()) return eng::make_error("boxing: no clips in " + dir + "/clips/boxing_clips.gltf");
+
+  w->arena = make_arena(o.seed);
+  w->model.dt = kPhysicsDt;
+  add_static_arena(*w);
+
+  Rng rng(o.seed ^ 0xB0C5ull);
+  if (o.scenario == "ragdolls") {
+    // Limp humanoids and loose crates dropped onto the arena from a seeded layout.
+    for (int k = 0; k < 3; ++k) {
+      Stance s;
+      s.position = {rng.uniform(-1.0, 1.0), rng.uniform(-0.6, 0.6)};
+      s.heading = rng.uniform(-M_PI, M_PI);
+      s.lead_top = s.rear_top = 0.9 + 0.5 * k;
+      add_boxer(*w, k, Eigen::Vector3f(0.55f + 0.2f * k, 0.5f, 0.9f - 0.25f * k), true, s);
+    }
+    for (int k = 0; k < 4; ++k) {
+      eng::physics::Body body;
+      body.name = "crate" + std::to_string(k);
+      body.joint = eng::physics::JointType::Free;
+      const double h = rng.uniform(0.12, 0.2);
+      body.mass = 6.0;
+      body.inertia = (body.mass / 3.0 * h * h) * Eigen::Matrix3d::Identity();
+      const int id = w->model.add_body(body);
+      Geom g;
+      g.shape.type = ShapeType::Box;
+      g.shape.half_extents = Eigen::Vector3d(h, h, h);
+      g.body = id;
+      g.group = 1u << 10;
+      w->model.add_geom(g);
+      w->loose.push_back(LooseBody{id, g.shape, Eigen::Vector3f(0.5f, 0.33f, 0.17f)});
+    }
+  } else {
+    add_boxer(*w, 0, Eigen::Vector3f(0.75f, 0.08f, 0.06f), false, w->arena.stances[0]);
+    add_boxer(*w, 1, Eigen::Vector3f(0.06f, 0.18f, 0.75f), false, w->arena.stances[1]);
+  }
+  w->model.finalize();
+  w->data = eng::physics::make_data(w->model);
+
+  if (o.scenario == "ragdolls") {
+    for (Boxer& b : w->boxers) {
+      boxer_desired_pose(w->boxer_desc, w->arena, b, 0.0, b.desired);
+      // Tumble: tilt the whole body by a random rotation before dropping it.
+      const Eigen::Quaterniond tilt(Eigen::AngleAxisd(rng.uniform(0.3, 1.4),
+                                                      Eigen::Vector3d(rng.uniform(-1, 1), rng.uniform(-1, 1), 0.2)
+                                                          .normalized()));
+      b.desired.pose.rotation[0] = tilt * b.desired.pose.rotation[0];
+      set_character_pose(w->model, w->data, b.bodies, w->boxer_desc, b.desired.pose.root_position,
+                         b.desired.pose.rotation);
+    }
+    for (size_t k = 0; k < w->loose.size(); ++k) {
+      const auto& body = w->model.bodies[w->loose[k].body];
+      double* q = w->data.q.data() + body.q_index;
+      q[0] = rng.uniform(-1.2, 1.2), q[1] = rng.uniform(-0.8, 0.8), q[2] = 1.5 + 0.4 * k;
+      const Eigen::Quaterniond r(Eigen::AngleAxisd(rng.uniform(0, 3), Eigen::Vector3d(0.3, 0.5, 0.8).normalized()));
+      q[3] = r.w(), q[4] = r.x(), q[5] = r.y(), q[6] = r.z();
+    }
+  } else {
+    for (Boxer& b : w->boxers) place_boxer(*w, b);
+  }
+  eng::physics::forward_kinematics(w->model, w->data);
+  return w;
+}
+
+void step_world(World& w) {
+  using clock = std::chrono::steady_clock;
+  const auto t0 = clock::now();
+  eng::physics::clear_applied(w.data);
+  for (Boxer& b : w.boxers) boxer_control(w.model, w.data, w.boxer_desc, w.arena, b, kPhysicsDt);
+
+  // Push scenario: a horizontal force at boxer 0's chest, direction in its heading frame (0 = where it faces).
+  const Options& o = w.options;
+  w.push_active = false;
+  if (o.scenario == "push" && !w.boxers.empty() && o.push_force > 0 && w.data.time >= o.push_at &&
+      w.data.time < o.push_at + o.push_duration) {
+    const Boxer& b = w.boxers[0];
+    const double a = b.stance.heading + o.push_dir_deg * M_PI / 180.0;
+    const Eigen::Vector3d f(o.push_force * std::cos(a), o.push_force * std::sin(a), 0.0);
+    const int chest = b.bodies.body[w.boxer_desc.skeleton.find("chest")];
+    eng::physics::apply_force_at_point(w.model, w.data, chest, f, w.data.com_world[chest]);
+    w.push_active = true;
+  }
+
+  eng::physics::step(w.model, w.data);
+  for (Boxer& b : w.boxers) boxer_measure(w.model, w.data, w.boxer_desc, b, kPhysicsDt);
+  ++w.steps;
+  w.physics_ms_total += std::chrono::duration<double, std::milli>(clock::now() - t0).count();
+}
+
+nlohmann::json world_report(const World& w) {
+  nlohmann::json boxers = nlohmann::json::array();
+  for (const Boxer& b : w.boxers) {
+    const BoxerMetrics& m = b.metrics;
+    nlohmann::json err = nlohmann::json::object();
+    double total = 0;
+    for (int i = 0; i < w.boxer_desc.skeleton.size() && m.samples > 0; ++i) {
+      const double rms = std::sqrt(m.err_sq_sum[i] / m.samples);
+      err[w.boxer_desc.skeleton.name[i]] = rms;
+      total += m.err_sq_sum[i] / m.samples;
+    }
+    boxers.push_back({{"index", b.index},
+                      {"servo", b.limp ? "limp" : servo_space_name(b.space)},
+                      {"fell", m.fell},
+                      {"fell_at_s", m.fell_at},
+                      {"fell_reason", m.fell_reason},
+                      {"time_upright_s", m.time_upright},
+                      {"max_com_speed", m.max_com_speed},
+                      {"rms_tracking_error_rad", err},
+                      {"rms_tracking_error_all_bones_rad",
+                       m.samples > 0 ? std::sqrt(total / w.boxer_desc.skeleton.size()) : 0.0},
+                      {"stance_lead_top_m", b.stance.lead_top},
+                      {"stance_rear_top_m", b.stance.rear_top}});
+  }
+  nlohmann::json r = {{"scenario", w.options.scenario},
+                      {"physics_steps", w.steps},
+                      {"physics_dt", kPhysicsDt},
+                      {"physics_ms_per_step", w.steps ? w.physics_ms_total / w.steps : 0.0},
+                      {"boxers", boxers}};
+  if (w.options.scenario == "push") {
+    const double momentum = w.options.push_force * w.options.push_duration;
+    r["push"] = {{"dir_deg", w.options.push_dir_deg},
+                 {"force_n", w.options.push_force},
+                 {"duration_s", w.options.push_duration},
+                 {"at_s", w.options.push_at},
+                 {"momentum_kg_m_s", momentum}};
+  }
+  return r;
+}
+
+}  // namespace boxing

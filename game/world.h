@@ -1,0 +1,54 @@
+#pragma once
+// The simulated world of one scenario: the arena's crates (static), the boxers (servo-driven articulations),
+// limp ragdolls and loose crates, stepped at a fixed 240 Hz; four physics steps per 60 Hz display frame.
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "engine/anim/clip.h"
+#include "engine/assets/character.h"
+#include "engine/assets/gltf.h"
+#include "engine/core/result.h"
+#include "engine/physics/data.h"
+#include "engine/physics/model.h"
+#include "game/arena.h"
+#include "game/boxer.h"
+#include "game/cli.h"
+
+namespace boxing {
+
+inline constexpr double kPhysicsDt = 1.0 / 240.0;
+inline constexpr int kStepsPerFrame = 4;  // 60 Hz display frames
+
+struct LooseBody {
+  int body = 0;
+  eng::physics::Shape shape;
+  Eigen::Vector3f color;
+};
+
+struct World {
+  Options options;
+  Arena arena;
+  eng::assets::GltfScene boxer_scene;
+  eng::assets::CharacterDesc boxer_desc;
+  std::vector<eng::anim::Clip> clips;
+  eng::physics::Model model;
+  eng::physics::Data data;
+  std::vector<Boxer> boxers;            // servo-driven (or limp ragdolls in the ragdolls scenario)
+  std::vector<LooseBody> loose;         // free crates
+  long steps = 0;
+  double physics_ms_total = 0.0;        // wall time spent in physics (reporting only, never fed back)
+  bool push_active = false;
+};
+
+// Loads content (boxer, clips) from options.content_dir and builds the scenario.
+eng::Result<std::unique_ptr<World>> make_world(const Options& options);
+// One physics step: control, external pushes, physics, measurements.
+void step_world(World& w);
+// The scenario's results for the report (per boxer: fell, time upright, max com speed, tracking error, servo).
+nlohmann::json world_report(const World& w);
+
+std::string content_dir(const Options& options);
+
+}  // namespace boxing

@@ -1,0 +1,85 @@
+// Command-line parsing of build/boxing: good flags land in Options, every bad flag or value is one error line.
+#include <gtest/gtest.h>
+
+#include "game/cli.h"
+
+using boxing::parse_cli;
+
+TEST(Cli, DefaultsAreTheDocumentedOnes) {
+  auto o = parse_cli({});
+  ASSERT_TRUE(o.ok());
+  EXPECT_EQ(o->width, 1280);
+  EXPECT_EQ(o->height, 720);
+  EXPECT_EQ(o->seed, 1u);
+  EXPECT_EQ(o->scenario, "arena");
+  EXPECT_FALSE(o->headless);
+  EXPECT_TRUE(o->validation);
+}
+
+TEST(Cli, ParsesEveryValueFlag) {
+  auto o = parse_cli({"--headless", "--width", "640", "--height=360", "--seconds", "2.5", "--seed", "42",
+                      "--scenario", "push", "--screenshot", "a.png", "--report", "r.json", "--servo",
+                      "parent-meathook", "--push-dir", "90", "--push-force", "150", "--push-duration", "0.1",
+                      "--push-at", "3", "--camera", "closeup", "--ghost", "--render-every", "30"});
+  ASSERT_TRUE(o.ok()) << o.error();
+  EXPECT_TRUE(o->headless);
+  EXPECT_EQ(o->width, 640);
+  EXPECT_EQ(o->height, 360);
+  EXPECT_DOUBLE_EQ(o->seconds, 2.5);
+  EXPECT_EQ(o->seed, 42u);
+  EXPECT_EQ(o->scenario, "push");
+  EXPECT_EQ(o->screenshot, "a.png");
+  EXPECT_EQ(o->report, "r.json");
+  EXPECT_EQ(o->servo, "parent-meathook");
+  EXPECT_DOUBLE_EQ(o->push_dir_deg, 90.0);
+  EXPECT_DOUBLE_EQ(o->push_force, 150.0);
+  EXPECT_DOUBLE_EQ(o->push_at, 3.0);
+  EXPECT_EQ(o->camera, "closeup");
+  EXPECT_TRUE(o->ghost);
+  EXPECT_EQ(o->render_every, 30);
+}
+
+TEST(Cli, GraphSubcommandTakesReportAndDot) {
+  auto o = parse_cli({"graph", "--report", "g.json", "--dot", "g.dot"});
+  ASSERT_TRUE(o.ok()) << o.error();
+  EXPECT_EQ(o->command, "graph");
+  EXPECT_EQ(o->graph_report, "g.json");
+  EXPECT_EQ(o->graph_dot, "g.dot");
+}
+
+// Each bad input gives an error that names the flag and points at --help.
+struct BadCase {
+  std::vector<std::string> args;
+  std::string mentions;
+};
+
+TEST(Cli, RejectsBadFlagsAndValuesWithOneLine) {
+  const std::vector<BadCase> cases = {
+      {{"--bogus"}, "--bogus"},
+      {{"--width", "abc"}, "--width"},
+      {{"--width", "0"}, "--width"},
+      {{"--width"}, "--width"},
+      {{"--seconds", "-1"}, "--seconds"},
+      {{"--seconds", "nan"}, "--seconds"},
+      {{"--seed", "-3"}, "--seed"},
+      {{"--scenario", "tennis"}, "tennis"},
+      {{"--servo", "magic"}, "magic"},
+      {{"--screenshot", "a.jpg"}, ".png"},
+      {{"--headless=yes"}, "--headless"},
+      {{"--dot", "g.dot"}, "--dot"},
+  };
+  for (const BadCase& c : cases) {
+    auto o = parse_cli(c.args);
+    ASSERT_FALSE(o.ok()) << c.args[0];
+    EXPECT_NE(o.error().find(c.mentions), std::string::npos) << o.error();
+    EXPECT_NE(o.error().find("--help"), std::string::npos) << o.error();
+    EXPECT_EQ(o.error().find('\n'), std::string::npos) << "one line: " << o.error();
+  }
+}
+
+TEST(Cli, HelpListsTheRequiredFlags) {
+  const std::string h = boxing::help_text();
+  for (const char* f : {"--headless", "--width", "--height", "--seconds", "--seed", "--screenshot", "--report",
+                        "--scenario", "--servo", "--push-dir"})
+    EXPECT_NE(h.find(f), std::string::npos) << f;
+}
