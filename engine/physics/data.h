@@ -1,0 +1,79 @@
+#pragma once
+// Simulation state + preallocated workspace. All arrays are sized by make_data(); step() performs
+// no heap allocation once the capacities (contacts, broadphase pairs) have been reached.
+#include <utility>
+#include <vector>
+
+#include "engine/physics/collision.h"
+#include "engine/physics/model.h"
+#include "engine/physics/broadphase.h"
+#include "engine/physics/types.h"
+
+namespace eng::physics {
+
+struct Contact {
+  ContactPoint point;       // geom ids filled; normal from a to b (world)
+  int body_a = 0, body_b = 0;
+  Vec3 force = Vec3::Zero();  // world force on b from the last solve (a gets -force), N
+  double normal_impulse = 0.0;  // N s, last solve
+  Vec3 friction_impulse = Vec3::Zero();  // world tangential impulse on b (warm start), N s
+};
+
+// A constraint row of the velocity-level solver (contact normal / friction, joint limit).
+struct ConstraintRow {
+  enum Kind : uint8_t { Normal, Friction, Limit } kind = Normal;
+  int contact = -1;   // contact index (Normal / Friction), -1 for limits
+  int partner = -1;   // Friction: index of the other tangent row of the pair (first row of the pair)
+  double bias = 0.0;  // target velocity term (J v + bias -> 0)
+  double mass_scale = 1.0, impulse_scale = 0.0;  // Box2D v3 soft step
+  double inv_diag = 0.0;  // 1 / (J M^-1 J^T)_ii
+  double lambda = 0.0;    // accumulated impulse
+  double mu = 0.0;        // friction coefficient (Friction rows)
+  double coupling = 0.0;  // Friction rows: J_t M^-1 J_n^T with the contact's normal row
+  int nz_begin = 0, nz_count = 0;  // sparse J row: entries [nz_begin, nz_begin + nz_count) of J_idx/J_val
+};
+
+struct Data {
+  VecX q, v, qacc, tau;  // tau: joint torques, user-set, persistent until changed
+  double time = 0.0;
+
+  // kinematics (forward_kinematics)
+  std::vector<Pose> x;            // world pose of each body frame
+  std::vector<Vec3> com_world;    // world com of each body
+  std::vector<Vec6> v_body;       // spatial velocity of each body, world coords at the world origin
+  std::vector<Vec6> cdof;         // per DoF motion subspace column S (world coords, at the origin)
+  std::vector<Vec6> cdof_dot;     // per DoF  d/dt S  (so c_i = sum cdof_dot * qdot, RBDA eq. 5.7 term)
+  std::vector<Mat6> cinert;       // spatial inertia of each body (world coords, at the origin)
+
+  // inputs
+  std::vector<Vec3> applied_force, applied_torque;  // world, at the body's com; clear_applied()
+
+  // contacts of the current step (and the previous one, for warm start)
+  std::vector<Contact> contacts, prev_contacts;
+
+  // ---- workspace (preallocated) ----
+  std::vector<Vec6> ws_a, ws_f;         // spatial accelerations / forces per body
+  std::vector<Mat6> ws_Ic;              // composite / articulated inertias per body
+  std::vector<Vec6> ws_p;               // articulated bias forces per body
+  std::vector<Mat6> ws_U, ws_Dinv;      // ABA: U = I^A S, D^-1 (top-left nd x nd) per body
+  std::vector<Vec6> ws_u, ws_c;         // ABA: u = tau - S^T p^A, c = Sdot qdot per body
+  MatX M;                               // joint-space inertia (+ armature, implicit damping)
+  MatX LD;                              // LTDL factor of M (RBDA 6.5): strict lower L, diagonal D
+  VecX bias, vtmp, vtmp2, v_free, passive;
+  // constraint rows: J sparse (only ancestor DoFs of the two bodies are nonzero; an index may repeat
+  // when the bodies share ancestors), M^-1 J^T dense row-major, capacity max_rows x nv
+  std::vector<ConstraintRow> rows;
+  std::vector<int> J_idx;
+  std::vector<double> J_val, MinvJT;
+  std::vector<double> MinvJT_T;  // DoF-major scratch for the multi-RHS solve (nv x max_rows)
+  int max_rows = 0;
+  // collision workspace
+  std::vector<Aabb> aabbs;
+  std::vector<Pose> geom_x;             // world pose of each geom
+  std::vector<std::pair<int, int>> pairs;
+  std::vector<ContactPoint> cp_tmp;
+};
+
+Data make_data(const Model& m);  // q at rest: identity quats, zero angles; v = 0
+
+}  // namespace eng::physics

@@ -1,0 +1,471 @@
+// The step pipeline (see step.h for the formulation and why).
+#include "engine/physics/step.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "engine/physics/dynamics.h"
+#include "engine/physics/spatial.h"
+#include "engine/physics/broadphase.h"
+#include "engine/physics/narrowphase.h"
+
+namespace eng::physics {
+
+namespace {
+
+// Box2D v3 soft step coefficients (Catto, Solver2D 2024).
+struct Softness {
+  double bias_rate, mass_scale, impulse_scale;
+};
+inline Softness make_soft(double hertz, double zeta, double h) {
+  if (hertz <= 0.0) return {0.0, 1.0, 0.0};
+  const double omega = 2.0 * M_PI * hertz;
+  const double a1 = 2.0 * zeta + h * omega;
+  const double a2 = h * omega * a1;
+  const double a3 = 1.0 / (1.0 + a2);
+  return {omega / a1, a2 * a3, a3};
+}
+
+inline void tangent_basis(const Vec3& n, Vec3& t1, Vec3& t2) {
+  t1 = std::abs(n.x()) < 0.57 ? n.cross(Vec3::UnitX()) : n.cross(Vec3::UnitY());
+  t1.normalize();
+  t2 = n.cross(t1);
+}
+
+inline bool is_static(const Model& m, int body) { return m.body_last_dof[body] < 0; }
+
+// Sparse J row of direction `dir` (world) at world point p: dir^T (J_p(b) - J_p(a)); entries are
+// appended at d.J_idx/J_val[begin...]; returns the count.
+inline int contact_row(const Model& m, Data& d, int ba, int bb, const Vec3& p, const Vec3& dir, int begin) {
+  int n = 0;
+  int* idx = d.J_idx.data() + begin;
+  double* val = d.J_val.data() + begin;
+  for (int k = m.body_last_dof[bb]; k >= 0; k = m.dof_parent[k]) {
+    idx[n] = k;
+    val[n++] = dir.dot(lin(d.cdof[k]) + ang(d.cdof[k]).cross(p));
+  }
+  for (int k = m.body_last_dof[ba]; k >= 0; k = m.dof_parent[k]) {
+    idx[n] = k;
+    val[n++] = -dir.dot(lin(d.cdof[k]) + ang(d.cdof[k]).cross(p));
+  }
+  return n;
+}
+
+inline double sparse_dot(const int* idx, const double* val, int n, const double* x) {
+  double s0 = 0.0, s1 = 0.0;  // two chains: halves the FP-add latency (fixed order: deterministic)
+  int i = 0;
+  for (; i + 1 < n; i += 2) {
+    s0 += val[i] * x[idx[i]];
+    s1 += val[i + 1] * x[idx[i + 1]];
+  }
+  if (i < n) s0 += val[i] * x[idx[i]];
+  return s0 + s1;
+}
+
+inline double dot_dense(const int* idx, const double* val, int n, const double* x) {
+  return sparse_dot(idx, val, n, x);
+}
+inline void axpy_n(double s, const double* x, double* y, int n) {
+  for (int i = 0; i < n; ++i) y[i] += s * x[i];
+}
+
+}  // namespace
+
+void begin_contacts(Data& d) {
+  std::swap(d.contacts, d.prev_contacts);  // swaps buffers: capacities are kept, no allocation
+  d.contacts.clear();
+}
+
+bool add_contact(const Model& m, Data& d, const ContactPoint& cp) {
+  if (static_cast<int>(d.contacts.size()) >= m.solver.max_contacts) return false;
+  Contact c;
+  c.point = cp;
+  c.body_a = m.geoms[cp.geom_a].body;
+  c.body_b = m.geoms[cp.geom_b].body;
+  // warm start: match last step's contact by (geom_a, geom_b, feature). Both lists come in
+  // the same deterministic order; a linear scan is cheap at our contact counts.
+  const int np = static_cast<int>(d.prev_contacts.size());
+  for (int k = 0; k < np; ++k) {
+    const Contact& pc = d.prev_contacts[k];
+    if (pc.point.geom_a == cp.geom_a && pc.point.geom_b == cp.geom_b && pc.point.feature == cp.feature) {
+      c.normal_impulse = pc.normal_impulse;
+      c.friction_impulse = pc.friction_impulse;
+      break;
+    }
+  }
+  d.contacts.push_back(c);
+  return true;
+}
+
+void collide(const Model& m, Data& d) {
+  begin_contacts(d);
+  const int ng = static_cast<int>(m.geoms.size());
+  const double margin = m.solver.contact_margin;
+  for (int g = 0; g < ng; ++g) {
+    const Geom& G = m.geoms[g];
+    d.geom_x[g] = d.x[G.body] * G.local;
+    d.aabbs[g] = shape_aabb(G.shape, d.geom_x[g], margin);
+  }
+  broadphase_pairs(d.aabbs.data(), ng, d.pairs);
+  for (const auto& pr : d.pairs) {
+    const Geom& ga = m.geoms[pr.first];
+    const Geom& gb = m.geoms[pr.second];
+    const int ba = ga.body, bb = gb.body;
+    if (ba == bb) continue;                                  // never the same body
+    if (is_static(m, ba) && is_static(m, bb)) continue;      // never two static geoms
+    // never parent/child (the world is not a "parent" here: bodies jointed to it still hit static geoms)
+    if ((bb > 0 && m.bodies[ba].parent == bb) || (ba > 0 && m.bodies[bb].parent == ba)) continue;
+    if (!((ga.group & gb.mask) && (gb.group & ga.mask))) continue;
+    const int ra = m.bodies[ba].root, rb = m.bodies[bb].root;
+    if (ra == rb && ra != 0 && !(ga.self_collide && gb.self_collide)) continue;
+    const int np = collide_shapes(ga.shape, d.geom_x[pr.first], gb.shape, d.geom_x[pr.second], margin,
+                                  d.cp_tmp.data(), 4);
+    for (int k = 0; k < np; ++k) {
+      ContactPoint cp = d.cp_tmp[k];
+      cp.geom_a = pr.first;
+      cp.geom_b = pr.second;
+      if (!add_contact(m, d, cp)) return;
+    }
+  }
+}
+
+void compute_constraints(const Model& m, Data& d) {
+  d.rows.clear();
+  const int nv = m.nv;
+  const double h = m.dt;
+  const SolverOptions& so = m.solver;
+  const Softness cs = make_soft(std::min(so.contact_hertz, 0.25 / h), so.contact_damping_ratio, h);
+  const Softness ls = make_soft(std::min(so.limit_hertz, 0.25 / h), so.limit_damping_ratio, h);
+  const double vmax = so.max_depenetration_speed;
+  int nz = 0;  // next free sparse entry
+  auto add_row = [&](ConstraintRow r, int count) {
+    r.nz_begin = nz;
+    r.nz_count = count;
+    nz += count;
+    d.rows.push_back(r);
+  };
+  auto add_unit_row = [&](ConstraintRow r, int dof, double value) {
+    d.J_idx[nz] = dof;
+    d.J_val[nz] = value;
+    add_row(r, 1);
+  };
+  // unilateral row with gap C (>0 apart, <0 violated): speculative if C > 0, soft otherwise
+  auto set_gap = [&](ConstraintRow& r, double C, const Softness& s) {
+    if (C > 0.0) {
+      r.bias = C / h;
+      r.mass_scale = 1.0;
+      r.impulse_scale = 0.0;
+    } else {
+      r.bias = std::max(s.bias_rate * C, -vmax);
+      r.mass_scale = s.mass_scale;
+      r.impulse_scale = s.impulse_scale;
+    }
+  };
+  if (nv == 0) return;
+  const bool warm = so.warm_start;
+  for (int ci = 0; ci < static_cast<int>(d.contacts.size()); ++ci) {
+    Contact& c = d.contacts[ci];
+    const Vec3& n = c.point.normal;
+    const Vec3& p = c.point.position;
+    Vec3 t1, t2;
+    tangent_basis(n, t1, t2);
+    ConstraintRow rn;
+    rn.kind = ConstraintRow::Normal;
+    rn.contact = ci;
+    set_gap(rn, -c.point.depth, cs);
+    rn.lambda = warm ? c.normal_impulse : 0.0;
+    add_row(rn, contact_row(m, d, c.body_a, c.body_b, p, n, nz));
+    const double mu = std::sqrt(m.geoms[c.point.geom_a].friction * m.geoms[c.point.geom_b].friction);
+    const int first = static_cast<int>(d.rows.size());
+    for (int k = 0; k < 2; ++k) {
+      ConstraintRow rt;
+      rt.kind = ConstraintRow::Friction;
+      rt.contact = ci;
+      rt.partner = first;
+      rt.mu = mu;
+      const Vec3& t = k == 0 ? t1 : t2;
+      rt.lambda = warm ? c.friction_impulse.dot(t) : 0.0;
+      add_row(rt, contact_row(m, d, c.body_a, c.body_b, p, t, nz));
+    }
+  }
+  // joint limits (RBDA-style unilateral constraints on joint coordinates)
+  const double act = 0.2;  // activation distance (rad) for speculative limit rows
+  for (size_t i = 1; i < m.bodies.size(); ++i) {
+    const Body& b = m.bodies[i];
+    if (b.joint == JointType::Hinge && b.limited) {
+      const double q = d.q[b.q_index];
+      const double lo = q - b.lower, hi = b.upper - q;
+      const bool use_lo = lo < hi;
+      const double C = use_lo ? lo : hi;
+      if (C > act) continue;
+      ConstraintRow r;
+      r.kind = ConstraintRow::Limit;
+      set_gap(r, C, ls);
+      add_unit_row(r, b.v_index, use_lo ? 1.0 : -1.0);
+    } else if (b.joint == JointType::Ball && (b.swing_limit > 0 || b.twist_limit > 0)) {
+      const Quat qr = quat_from(d.q.data() + b.q_index).normalized();
+      const Mat3 R = qr.toRotationMatrix();
+      if (b.swing_limit > 0) {
+        // swing: angle between the body Z axis and the rest Z axis; d(theta)/dt = w_parent . nhat,
+        // nhat = (ez x z)/|ez x z|, and w_parent = R w_body.
+        const Vec3 z = R.col(2);
+        const Vec3 axis = Vec3::UnitZ().cross(z);
+        const double s = axis.norm();
+        const double theta = std::atan2(s, z.z());
+        const double C = b.swing_limit - theta;
+        if (C < act && s > 1e-9) {
+          ConstraintRow r;
+          r.kind = ConstraintRow::Limit;
+          set_gap(r, C, ls);
+          const Vec3 jb = -(R.transpose() * (axis / s));
+          for (int k = 0; k < 3; ++k) {
+            d.J_idx[nz + k] = b.v_index + k;
+            d.J_val[nz + k] = jb[k];
+          }
+          add_row(r, 3);
+        }
+      }
+      if (b.twist_limit > 0) {
+        // swing-twist decomposition q = swing * twist(about body Z); twist rate ~ w_body.z
+        double tw = 2.0 * std::atan2(qr.z(), qr.w());
+        if (tw > M_PI) tw -= 2.0 * M_PI;
+        if (tw < -M_PI) tw += 2.0 * M_PI;
+        const double C = b.twist_limit - std::abs(tw);
+        if (C < act) {
+          ConstraintRow r;
+          r.kind = ConstraintRow::Limit;
+          set_gap(r, C, ls);
+          add_unit_row(r, b.v_index + 2, tw >= 0 ? -1.0 : 1.0);
+        }
+      }
+    }
+  }
+}
+
+void passive_forces(const Model& m, Data& d) {
+  const double h = m.dt;
+  for (size_t i = 1; i < m.bodies.size(); ++i) {
+    const Body& b = m.bodies[i];
+    for (int k = 0; k < b.nv; ++k) d.passive[b.v_index + k] = -b.damping * d.v[b.v_index + k];
+    if (b.stiffness > 0) {
+      if (b.joint == JointType::Hinge) {
+        d.passive[b.v_index] -= b.stiffness * (d.q[b.q_index] + h * d.v[b.v_index]);
+      } else if (b.joint == JointType::Ball) {
+        const Vec3 rv = quat_log(quat_from(d.q.data() + b.q_index));
+        for (int k = 0; k < 3; ++k)
+          d.passive[b.v_index + k] -= b.stiffness * (rv[k] + h * d.v[b.v_index + k]);
+      }
+    }
+  }
+}
+
+void forward_dynamics(const Model& m, Data& d) {
+  if (m.nv == 0) return;
+  const double h = m.dt;
+  crba(m, d, d.M);
+  // implicit damping / springs and armature on the diagonal (see step.h)
+  for (size_t i = 1; i < m.bodies.size(); ++i) {
+    const Body& b = m.bodies[i];
+    const double add = b.armature + h * b.damping + h * h * b.stiffness;
+    for (int k = 0; k < b.nv; ++k) d.M(b.v_index + k, b.v_index + k) += add;
+  }
+  factor_ltdl(m, d.M, d.LD);
+  bias_forces(m, d, d.bias);
+  for (int k = 0; k < m.nv; ++k) d.v_free[k] = h * (d.tau[k] + d.passive[k] - d.bias[k]);
+  solve_ltdl(m, d.LD, d.v_free);
+  for (int k = 0; k < m.nv; ++k) {
+    d.qacc[k] = d.v_free[k] / h;
+    d.v_free[k] += d.v[k];
+  }
+}
+
+void solve_constraints(const Model& m, Data& d) {
+  const int nv = m.nv;
+  if (nv == 0) return;
+  const int nr = static_cast<int>(d.rows.size());
+  d.vtmp = d.v;  // velocity at the start of the step (for qacc)
+  d.v = d.v_free;
+  // M^-1 J^T for all rows in one multi-RHS sparse solve (DoF-major scratch), then transposed so each
+  // row's W_r = M^-1 J_r^T is contiguous for the PGS updates; Delassus diagonal J_r W_r.
+  double* X = d.MinvJT_T.data();
+  std::fill(X, X + static_cast<size_t>(nv) * nr, 0.0);
+  for (int r = 0; r < nr; ++r) {
+    const ConstraintRow& row = d.rows[r];
+    for (int k = 0; k < row.nz_count; ++k)
+      X[static_cast<size_t>(d.J_idx[row.nz_begin + k]) * nr + r] += d.J_val[row.nz_begin + k];
+  }
+  solve_ltdl_multi(m, d.LD, X, nr, nr);
+  for (int r = 0; r < nr; ++r) {
+    ConstraintRow& row = d.rows[r];
+    double* W = d.MinvJT.data() + static_cast<size_t>(r) * nv;
+    for (int i = 0; i < nv; ++i) W[i] = X[static_cast<size_t>(i) * nr + r];
+    const double a = sparse_dot(d.J_idx.data() + row.nz_begin, d.J_val.data() + row.nz_begin, row.nz_count, W);
+    row.inv_diag = a > 1e-12 ? 1.0 / a : 0.0;
+  }
+  // warm start (clamp old impulses into the current feasible set)
+  for (int r = 0; r < nr; ++r) {
+    ConstraintRow& row = d.rows[r];
+    if (row.kind != ConstraintRow::Friction) {
+      row.lambda = std::max(row.lambda, 0.0);
+    } else if (row.partner == r) {
+      ConstraintRow& r2 = d.rows[r + 1];
+      const double bound = row.mu * d.rows[r - 1].lambda;
+      const double nrm = std::sqrt(row.lambda * row.lambda + r2.lambda * r2.lambda);
+      if (nrm > bound && nrm > 0) {
+        row.lambda *= bound / nrm;
+        r2.lambda *= bound / nrm;
+      }
+    }
+  }
+  for (int r = 0; r < nr; ++r)
+    if (d.rows[r].lambda != 0.0)
+      axpy_n(d.rows[r].lambda, d.MinvJT.data() + static_cast<size_t>(r) * nv, d.v.data(), nv);
+  const bool cone = m.solver.friction == FrictionModel::Cone;
+  double* v = d.v.data();
+  // Contact blocks (normal r, tangents r+1, r+2 share one sparse index pattern): one fused pass for the
+  // three J.v products, the normal update, the tangent updates corrected by the normal's effect
+  // (J_t . W_n, precomputed: exactly Gauss-Seidel order n -> t), and one fused pass updating v.
+  for (int r = 0; r < nr; ++r) {
+    ConstraintRow& row = d.rows[r];
+    if (row.kind == ConstraintRow::Friction)
+      row.coupling = dot_dense(d.J_idx.data() + row.nz_begin, d.J_val.data() + row.nz_begin, row.nz_count,
+                               d.MinvJT.data() + static_cast<size_t>(row.partner - 1) * nv);
+  }
+  for (int it = 0; it < m.solver.iterations; ++it) {
+    for (int r = 0; r < nr; ++r) {
+      ConstraintRow& row = d.rows[r];
+      const int* ji = d.J_idx.data() + row.nz_begin;
+      const double* jx = d.J_val.data() + row.nz_begin;
+      const double* W = d.MinvJT.data() + static_cast<size_t>(r) * nv;
+      if (row.kind == ConstraintRow::Limit) {
+        const double jv = sparse_dot(ji, jx, row.nz_count, v);
+        const double dl = -row.inv_diag * row.mass_scale * (jv + row.bias) - row.impulse_scale * row.lambda;
+        const double nl = std::max(row.lambda + dl, 0.0);
+        axpy_n(nl - row.lambda, W, v, nv);
+        row.lambda = nl;
+        continue;
+      }
+      // Normal row followed by its two friction rows
+      ConstraintRow& f1 = d.rows[r + 1];
+      ConstraintRow& f2 = d.rows[r + 2];
+      const double* jx1 = d.J_val.data() + f1.nz_begin;
+      const double* jx2 = d.J_val.data() + f2.nz_begin;
+      double jn = 0.0, j1 = 0.0, j2 = 0.0, jnb = 0.0, j1b = 0.0, j2b = 0.0;  // 2 chains each
+      const int cnt = row.nz_count;
+      int k = 0;
+      for (; k + 1 < cnt; k += 2) {
+        const double va = v[ji[k]], vb = v[ji[k + 1]];
+        jn += jx[k] * va;
+        j1 += jx1[k] * va;
+        j2 += jx2[k] * va;
+        jnb += jx[k + 1] * vb;
+        j1b += jx1[k + 1] * vb;
+        j2b += jx2[k + 1] * vb;
+      }
+      if (k < cnt) {
+        const double va = v[ji[k]];
+        jn += jx[k] * va;
+        j1 += jx1[k] * va;
+        j2 += jx2[k] * va;
+      }
+      jn += jnb;
+      j1 += j1b;
+      j2 += j2b;
+      const double dl = -row.inv_diag * row.mass_scale * (jn + row.bias) - row.impulse_scale * row.lambda;
+      const double nl = std::max(row.lambda + dl, 0.0);
+      const double dn = nl - row.lambda;
+      row.lambda = nl;
+      j1 += f1.coupling * dn;
+      j2 += f2.coupling * dn;
+      const double bound = f1.mu * nl;
+      double l1 = f1.lambda - f1.inv_diag * j1;
+      double l2 = f2.lambda - f2.inv_diag * j2;
+      if (cone) {
+        const double n2 = l1 * l1 + l2 * l2;
+        if (n2 > bound * bound) {  // sticking contacts skip the sqrt
+          const double nrm = std::sqrt(n2);
+          const double sc = nrm > 0 ? bound / nrm : 0.0;
+          l1 *= sc;
+          l2 *= sc;
+        }
+      } else {
+        l1 = std::clamp(l1, -bound, bound);
+        l2 = std::clamp(l2, -bound, bound);
+      }
+      const double d1 = l1 - f1.lambda, d2 = l2 - f2.lambda;
+      f1.lambda = l1;
+      f2.lambda = l2;
+      const double* W1 = W + nv;
+      const double* W2 = W1 + nv;
+      for (int i = 0; i < nv; ++i) v[i] += dn * W[i] + d1 * W1[i] + d2 * W2[i];  // one pass over v
+      r += 2;
+    }
+  }
+  // results back into the contacts
+  for (int r = 0; r < nr; ++r) {
+    const ConstraintRow& row = d.rows[r];
+    if (row.kind != ConstraintRow::Normal) continue;
+    Contact& c = d.contacts[row.contact];
+    Vec3 t1, t2;
+    tangent_basis(c.point.normal, t1, t2);
+    c.normal_impulse = row.lambda;
+    c.friction_impulse = d.rows[r + 1].lambda * t1 + d.rows[r + 2].lambda * t2;
+    c.force = (row.lambda * c.point.normal + c.friction_impulse) / m.dt;
+  }
+  for (int k = 0; k < nv; ++k) d.qacc[k] = (d.v[k] - d.vtmp[k]) / m.dt;
+}
+
+void integrate(const Model& m, Data& d) {
+  const double h = m.dt;
+  for (size_t i = 1; i < m.bodies.size(); ++i) {
+    const Body& b = m.bodies[i];
+    double* q = d.q.data() + b.q_index;
+    const double* v = d.v.data() + b.v_index;
+    switch (b.joint) {
+      case JointType::Free: {
+        for (int k = 0; k < 3; ++k) q[k] += h * v[k];
+        const Quat r = (quat_from(q + 3) * quat_exp(h * Vec3(v[3], v[4], v[5]))).normalized();
+        quat_store(r, q + 3);
+        break;
+      }
+      case JointType::Ball: {
+        const Quat r = (quat_from(q) * quat_exp(h * Vec3(v[0], v[1], v[2]))).normalized();
+        quat_store(r, q);
+        break;
+      }
+      case JointType::Hinge: q[0] += h * v[0]; break;
+      case JointType::Fixed: break;
+    }
+  }
+  d.time += h;
+}
+
+void step(const Model& m, Data& d) {
+  forward_kinematics(m, d);
+  collide(m, d);
+  compute_constraints(m, d);
+  passive_forces(m, d);
+  forward_dynamics(m, d);
+  solve_constraints(m, d);
+  integrate(m, d);
+}
+
+void apply_force_at_point(const Model& m, Data& d, int body, const Vec3& f, const Vec3& p) {
+  d.applied_force[body] += f;
+  d.applied_torque[body] += (p - d.com_world[body]).cross(f);
+}
+
+void apply_world_torque(Data& d, int body, const Vec3& t) { d.applied_torque[body] += t; }
+
+void apply_world_torque_with_reaction(const Model& m, Data& d, int body, const Vec3& t) {
+  d.applied_torque[body] += t;
+  const int p = m.bodies[body].parent;
+  if (p > 0) d.applied_torque[p] -= t;
+}
+
+void clear_applied(Data& d) {
+  for (auto& f : d.applied_force) f.setZero();
+  for (auto& t : d.applied_torque) t.setZero();
+}
+
+}  // namespace eng::physics

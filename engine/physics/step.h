@@ -1,0 +1,59 @@
+#pragma once
+// Time stepping: step() is a pipeline of stages, each a free function (also callable on their own):
+//   forward_kinematics -> collide -> compute_constraints -> passive_forces -> forward_dynamics
+//   -> solve_constraints -> integrate
+//
+// FORMULATION (and why)
+//  * Velocity-level, semi-implicit Euler (as Box2D, Bullet, PhysX, MuJoCo's Euler integrator):
+//      (M + A + dt*D + dt^2*K) (v+ - v) = dt (tau - c - D v - K (q + dt v)) + J^T lambda
+//    Joint damping D and springs K are implicit (added to the matrix), armature A on the diagonal,
+//    so arbitrarily high damping / stiff servos are stable at 240 Hz.
+//  * M is built by CRBA and factorised by the tree-sparse L^T D L (RBDA 6.5); the unconstrained
+//    velocity v_free and the rows M^-1 J^T come from sparse solves; the Delassus diagonal
+//    J M^-1 J^T is used by the solver.
+//  * Constraints (contact normal + 2 friction rows, hinge / ball swing / ball twist limits) are solved
+//    by projected Gauss-Seidel on impulses, warm started from the previous step (contacts matched by
+//    (geom_a, geom_b, feature)). Each row keeps v consistent: v += (M^-1 J^T)_i dlambda_i.
+//  * Soft constraints use Box2D v3's soft step (Catto 2024, "Solver2D"): with omega = 2 pi hertz,
+//    zeta = damping ratio, h = dt:  a1 = 2 zeta + h omega, a2 = h omega a1, a3 = 1/(1 + a2),
+//    bias_rate = omega / a1, mass_scale = a2 a3, impulse_scale = a3, and
+//    dlambda = -mass_scale * m_eff * (J v + bias) - impulse_scale * lambda,
+//    bias = max(bias_rate * C, -max_depenetration_speed) for penetration C < 0 and C / h for a
+//    speculative gap C > 0. Why: it is the implicit spring-damper (same family as MuJoCo's solref
+//    timeconst/dampratio) but in a PGS-friendly impulse form, unconditionally stable, no tuning per
+//    mass, and the push-out speed is capped so overlapping limbs separate calmly. No restitution.
+//  * Friction: Coulomb, per contact two tangent rows; Cone (default) projects the tangential impulse
+//    onto the disk |lambda_t| <= mu lambda_n, Pyramid clamps each row.
+//  * Quaternions are integrated on the manifold q <- q * exp(w_body dt / 2) and renormalised.
+#include "engine/physics/data.h"
+#include "engine/physics/model.h"
+
+namespace eng::physics {
+
+void step(const Model& m, Data& d);
+
+// pipeline stages
+void collide(const Model& m, Data& d);              // fills d.contacts (needs forward_kinematics)
+// building blocks of collide(), public for custom contact sources / tests:
+void begin_contacts(Data& d);  // d.prev_contacts <- d.contacts (for warm start), d.contacts cleared
+// appends a contact (geom ids filled; bodies from the geoms), warm-started from the previous step's
+// contact with the same (geom_a, geom_b, feature). Returns false when max_contacts is reached.
+bool add_contact(const Model& m, Data& d, const ContactPoint& cp);
+void compute_constraints(const Model& m, Data& d);  // rows, J, bias and soft params
+void passive_forces(const Model& m, Data& d);       // d.passive = -D v - K (q + dt v)
+void forward_dynamics(const Model& m, Data& d);     // M (with armature + implicit terms), factor, v_free
+void solve_constraints(const Model& m, Data& d);    // M^-1 J^T, Delassus diagonal, PGS; d.v; forces
+void integrate(const Model& m, Data& d);            // q += dt * v on the manifold; time += dt
+
+// NOTE: after step(), d.x / com_world / v_body / cdof are those computed at the START of the step
+// (as in MuJoCo's mj_step); call forward_kinematics(m, d) if poses must match the new q exactly.
+//
+// inputs (persist until clear_applied). apply_force_at_point uses d.com_world (last kinematics).
+void apply_force_at_point(const Model& m, Data& d, int body, const Vec3& force_world,
+                          const Vec3& point_world);
+void apply_world_torque(Data& d, int body, const Vec3& torque_world);
+// +torque on body, -torque on its parent (unless the parent is the world)
+void apply_world_torque_with_reaction(const Model& m, Data& d, int body, const Vec3& torque_world);
+void clear_applied(Data& d);
+
+}  // namespace eng::physics

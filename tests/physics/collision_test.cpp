@@ -1,0 +1,221 @@
+// Narrowphase and broadphase against closed-form answers: depths, normals (a -> b), manifold sizes, symmetry
+// under swapping the pair, stable feature ids, no NaN on random poses, broadphase == brute force.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "engine/physics/broadphase.h"
+#include "engine/physics/narrowphase.h"
+
+using namespace eng::physics;
+
+namespace {
+
+Shape sphere(double r) {
+  Shape s;
+  s.type = ShapeType::Sphere;
+  s.radius = r;
+  return s;
+}
+Shape capsule(double r, double hl) {
+  Shape s;
+  s.type = ShapeType::Capsule;
+  s.radius = r;
+  s.half_length = hl;
+  return s;
+}
+Shape box(double x, double y, double z) {
+  Shape s;
+  s.type = ShapeType::Box;
+  s.half_extents = Vec3(x, y, z);
+  return s;
+}
+Shape plane() {
+  Shape s;
+  s.type = ShapeType::Plane;
+  return s;
+}
+Pose at(const Vec3& p, const Mat3& R = Mat3::Identity()) { return Pose{R, p}; }
+Mat3 rot(double angle, const Vec3& axis) { return Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix(); }
+
+int collide(const Shape& a, const Pose& xa, const Shape& b, const Pose& xb, ContactPoint* out, double margin = 0.0) {
+  return collide_shapes(a, xa, b, xb, margin, out, 4);
+}
+
+}  // namespace
+
+TEST(Narrowphase, SphereSphereDepthNormalAndMidpoint) {
+  ContactPoint c[4];
+  ASSERT_EQ(collide(sphere(0.5), at({0, 0, 0}), sphere(0.3), at({0.7, 0, 0}), c), 1);
+  EXPECT_NEAR(c[0].depth, 0.1, 1e-12);
+  EXPECT_TRUE(c[0].normal.isApprox(Vec3::UnitX()));
+  EXPECT_NEAR(c[0].position.x(), 0.45, 1e-12);  // midway between the surfaces at 0.5 and 0.4
+}
+
+TEST(Narrowphase, SeparatedBeyondMarginGivesNothingAndWithinMarginIsSpeculative) {
+  ContactPoint c[4];
+  EXPECT_EQ(collide(sphere(0.5), at({0, 0, 0}), sphere(0.5), at({1.1, 0, 0}), c, 0.05), 0);
+  ASSERT_EQ(collide(sphere(0.5), at({0, 0, 0}), sphere(0.5), at({1.03, 0, 0}), c, 0.05), 1);
+  EXPECT_NEAR(c[0].depth, -0.03, 1e-12);
+}
+
+TEST(Narrowphase, SphereOnPlaneAndOnBoxFace) {
+  ContactPoint c[4];
+  ASSERT_EQ(collide(sphere(0.2), at({1, 2, 0.15}), plane(), at({0, 0, 0}), c), 1);
+  EXPECT_NEAR(c[0].depth, 0.05, 1e-12);
+  EXPECT_TRUE(c[0].normal.isApprox(-Vec3::UnitZ()));  // from the sphere down to the plane
+  ASSERT_EQ(collide(box(1, 1, 0.5), at({0, 0, 0}), sphere(0.2), at({0.3, 0.1, 0.68}), c), 1);
+  EXPECT_NEAR(c[0].depth, 0.02, 1e-12);
+  EXPECT_TRUE(c[0].normal.isApprox(Vec3::UnitZ()));  // from the box up to the sphere
+}
+
+TEST(Narrowphase, SphereCentreInsideBoxPushesOutThroughNearestFace) {
+  ContactPoint c[4];
+  ASSERT_EQ(collide(sphere(0.1), at({0.45, 0, 0}), box(0.5, 0.5, 0.5), at({0, 0, 0}), c), 1);
+  EXPECT_NEAR(c[0].depth, 0.15, 1e-12);
+  EXPECT_TRUE(c[0].normal.isApprox(-Vec3::UnitX()));  // the box lies on the sphere's -x side
+}
+
+TEST(Narrowphase, CapsuleLyingOnABoxGivesTwoPoints) {
+  ContactPoint c[4];
+  const int n = collide(capsule(0.05, 0.2), at({0, 0, 0.54}, rot(M_PI / 2, Vec3::UnitY())), box(0.5, 0.5, 0.5),
+                        at({0, 0, 0}), c);
+  ASSERT_EQ(n, 2);
+  for (int i = 0; i < n; ++i) {
+    EXPECT_NEAR(c[i].depth, 0.01, 1e-9);
+    EXPECT_TRUE(c[i].normal.isApprox(-Vec3::UnitZ()));
+  }
+}
+
+TEST(Narrowphase, CapsuleAcrossACrateEdgeFindsTheDeepInteriorPoint) {
+  ContactPoint c[4];
+  // A shin lying across the edge x = 0.5 of a crate top, tilted so both caps are clear but the middle is in.
+  const Mat3 R = rot(M_PI / 2, Vec3::UnitY()) * rot(0.0, Vec3::UnitZ());
+  const int n = collide(capsule(0.05, 0.4), at({0.5, 0, 0.54}, R * rot(0.2, Vec3::UnitX())), box(0.5, 0.5, 0.5),
+                        at({0, 0, 0}), c);
+  ASSERT_GE(n, 1);
+  double deepest = -1;
+  for (int i = 0; i < n; ++i) deepest = std::max(deepest, c[i].depth);
+  EXPECT_NEAR(deepest, 0.01, 2e-3);
+}
+
+TEST(Narrowphase, ParallelCapsulesGiveTwoPointsAndCrossedOne) {
+  ContactPoint c[4];
+  EXPECT_EQ(collide(capsule(0.05, 0.3), at({0, 0, 0}), capsule(0.05, 0.3), at({0.08, 0, 0.1}), c), 2);
+  EXPECT_NEAR(c[0].depth, 0.02, 1e-9);
+  ASSERT_EQ(collide(capsule(0.05, 0.3), at({0, 0, 0}), capsule(0.05, 0.3),
+                    at({0.09, 0, 0}, rot(M_PI / 2, Vec3::UnitX())), c),
+            1);
+  EXPECT_NEAR(c[0].depth, 0.01, 1e-9);
+  EXPECT_TRUE(c[0].normal.isApprox(Vec3::UnitX()));
+}
+
+TEST(Narrowphase, BoxRestingFlatOnBoxOrPlaneGivesFourPointsOfTheRightDepth) {
+  ContactPoint c[4];
+  for (double yaw : {0.0, 0.3, 1.2}) {
+    ASSERT_EQ(collide(box(0.5, 0.5, 0.25), at({0, 0, 0}), box(0.1, 0.15, 0.1),
+                      at({0.05, -0.1, 0.349}, rot(yaw, Vec3::UnitZ())), c),
+              4)
+        << yaw;
+    for (int i = 0; i < 4; ++i) {
+      EXPECT_NEAR(c[i].depth, 0.001, 1e-9);
+      EXPECT_TRUE(c[i].normal.isApprox(Vec3::UnitZ(), 1e-9));
+    }
+  }
+  ASSERT_EQ(collide(box(0.1, 0.2, 0.3), at({0, 0, 0.29}, rot(0.7, Vec3::UnitZ())), plane(), at({0, 0, 0}), c), 4);
+  for (int i = 0; i < 4; ++i) EXPECT_NEAR(c[i].depth, 0.01, 1e-12);
+}
+
+TEST(Narrowphase, BoxEdgeOnEdgeGivesOnePointAlongTheCrossAxis) {
+  ContactPoint c[4];
+  // Two unit cubes rotated 45 degrees about perpendicular axes, touching edge to edge along Z.
+  const double s = std::sqrt(2.0) * 0.5;
+  const int n = collide(box(0.5, 0.5, 0.5), at({0, 0, 0}, rot(M_PI / 4, Vec3::UnitX())), box(0.5, 0.5, 0.5),
+                        at({0, 0, 2 * s - 0.01}, rot(M_PI / 4, Vec3::UnitY())), c);
+  ASSERT_EQ(n, 1);
+  EXPECT_NEAR(c[0].depth, 0.01, 1e-8);
+  EXPECT_NEAR(std::abs(c[0].normal.z()), 1.0, 1e-9);
+  EXPECT_GT(c[0].normal.z(), 0.0);
+}
+
+TEST(Narrowphase, SwappingThePairFlipsTheNormalAndKeepsTheDepth) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(-1, 1);
+  const Shape shapes[] = {sphere(0.2), capsule(0.1, 0.3), box(0.2, 0.3, 0.1)};
+  for (int trial = 0; trial < 300; ++trial) {
+    for (const Shape& a : shapes) {
+      for (const Shape& b : shapes) {
+        const Pose xa = at(Vec3(u(rng), u(rng), u(rng)) * 0.3, rot(3 * u(rng), Vec3(u(rng), u(rng), u(rng) + 2)));
+        const Pose xb = at(Vec3(u(rng), u(rng), u(rng)) * 0.3, rot(3 * u(rng), Vec3(u(rng), u(rng) + 2, u(rng))));
+        ContactPoint c1[4], c2[4];
+        const int n1 = collide(a, xa, b, xb, c1), n2 = collide(b, xb, a, xa, c2);
+        if (a.type == b.type) continue;  // same-type order is the caller's; checked by the closed forms above
+        ASSERT_EQ(n1, n2);
+        for (int i = 0; i < n1; ++i) {
+          EXPECT_NEAR(c1[i].depth, c2[i].depth, 1e-12);
+          EXPECT_TRUE(c1[i].normal.isApprox(-c2[i].normal));
+        }
+      }
+    }
+  }
+}
+
+TEST(Narrowphase, RandomPosesNeverGiveNanAndNormalsAreUnit) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(-1, 1);
+  const Shape shapes[] = {sphere(0.2), capsule(0.1, 0.3), box(0.2, 0.3, 0.1), plane()};
+  long points = 0;
+  for (int trial = 0; trial < 10000; ++trial) {
+    const Shape& a = shapes[trial % 3];
+    const Shape& b = shapes[(trial / 3) % 4];
+    // Include exactly coincident centres and axis-aligned poses (degenerate cases).
+    const bool degenerate = trial % 17 == 0;
+    const Pose xa = at(degenerate ? Vec3(Vec3::Zero()) : Vec3(Vec3(u(rng), u(rng), u(rng)) * 0.4),
+                       degenerate ? Mat3(Mat3::Identity()) : rot(3 * u(rng), Vec3(u(rng), u(rng), 1.5)));
+    const Pose xb = at(degenerate ? Vec3(Vec3::Zero()) : Vec3(Vec3(u(rng), u(rng), u(rng)) * 0.4),
+                       degenerate ? Mat3(Mat3::Identity()) : rot(3 * u(rng), Vec3(1.5, u(rng), u(rng))));
+    ContactPoint c[4];
+    const int n = collide(a, xa, b, xb, c, 0.02);
+    for (int i = 0; i < n; ++i, ++points) {
+      ASSERT_TRUE(c[i].position.allFinite() && c[i].normal.allFinite() && std::isfinite(c[i].depth));
+      EXPECT_NEAR(c[i].normal.norm(), 1.0, 1e-9);
+    }
+  }
+  EXPECT_GT(points, 1000);
+}
+
+TEST(Narrowphase, FeatureIdsSurviveATinyPerturbation) {
+  ContactPoint c1[4], c2[4];
+  const Pose ground = at({0, 0, 0});
+  const int n1 = collide(box(1, 1, 0.5), ground, box(0.1, 0.1, 0.1), at({0.2, 0.1, 0.599}, rot(0.3, Vec3::UnitZ())), c1);
+  const int n2 = collide(box(1, 1, 0.5), ground, box(0.1, 0.1, 0.1),
+                         at({0.2001, 0.1, 0.5991}, rot(0.3001, Vec3(0.001, 0, 1))), c2);
+  ASSERT_EQ(n1, n2);
+  for (int i = 0; i < n1; ++i) EXPECT_EQ(c1[i].feature, c2[i].feature);
+}
+
+TEST(Broadphase, FindsExactlyTheBruteForceOverlaps) {
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(-2, 2);
+  std::vector<Aabb> boxes;
+  for (int i = 0; i < 200; ++i) {
+    const Vec3 c(u(rng), u(rng), u(rng));
+    const Vec3 h = Vec3(std::abs(u(rng)), std::abs(u(rng)), std::abs(u(rng))) * 0.15;
+    boxes.push_back(Aabb{c - h, c + h});
+  }
+  std::vector<std::pair<int, int>> pairs, brute;
+  broadphase_pairs(boxes.data(), int(boxes.size()), pairs);
+  for (int i = 0; i < 200; ++i)
+    for (int j = i + 1; j < 200; ++j)
+      if (boxes[i].overlaps(boxes[j])) brute.emplace_back(i, j);
+  EXPECT_EQ(pairs, brute);
+  EXPECT_GT(brute.size(), 10u);
+}
+
+TEST(Broadphase, ShapeBoundsContainTheShape) {
+  const Aabb b = shape_aabb(capsule(0.1, 0.5), at({1, 0, 0}, rot(M_PI / 2, Vec3::UnitY())), 0.0);
+  EXPECT_NEAR(b.hi.x(), 1.6, 1e-12);
+  EXPECT_NEAR(b.hi.z(), 0.1, 1e-12);
+  const Aabb p = shape_aabb(plane(), at({0, 0, 0}), 0.0);
+  EXPECT_LT(p.lo.x(), -1e10);
+}
