@@ -1,0 +1,70 @@
+#pragma once
+// GLFW window wrapper: owns the window, collects input per frame, creates the Vulkan surface.
+#include <memory>
+#include <string>
+#include <vector>
+#include <vulkan/vulkan.h>
+#include <glm/glm.hpp>
+#include "engine/core/result.h"
+
+struct GLFWwindow;
+
+namespace eng::platform {
+
+// True when a display server is reachable. Checks DISPLAY / WAYLAND_DISPLAY first so it returns at once (never
+// blocks) on headless machines, then tries to initialise GLFW.
+bool display_available();
+
+struct WindowConfig {
+  std::string title = "boxing";
+  int width = 1280;
+  int height = 720;
+  bool resizable = true;
+};
+
+class Window {
+ public:
+  static eng::Result<std::unique_ptr<Window>> create(const WindowConfig& cfg);
+  ~Window();
+  Window(const Window&) = delete;
+  Window& operator=(const Window&) = delete;
+
+  // Clears the per-frame input (pressed keys, scroll) and pumps GLFW events.
+  void poll_events();
+  bool should_close() const;
+  void request_close();
+  void set_title(const std::string& title);
+  void set_size(int width, int height);
+  void iconify();
+  void restore();
+
+  glm::ivec2 framebuffer_size() const;
+  bool minimized() const;  // iconified or zero-sized framebuffer: nothing to render
+  // True once after the framebuffer changed size (the renderer also detects this on its own).
+  bool consume_resized();
+
+  // GLFW_KEY_* codes: pressed during the last poll_events() (edge), and currently held.
+  bool key_pressed(int glfw_key) const;
+  bool key_down(int glfw_key) const;
+  glm::dvec2 mouse_position() const;
+  bool mouse_button_down(int glfw_button) const;
+  glm::dvec2 scroll_delta() const;  // accumulated during the last poll_events()
+
+  eng::Result<VkSurfaceKHR> create_surface(VkInstance instance) const;
+  // Instance extensions GLFW needs to present to this window system.
+  static std::vector<const char*> required_instance_extensions();
+  GLFWwindow* handle() const { return window_; }
+
+ private:
+  Window() = default;
+  static void on_key(GLFWwindow* w, int key, int scancode, int action, int mods);
+  static void on_scroll(GLFWwindow* w, double dx, double dy);
+  static void on_framebuffer_size(GLFWwindow* w, int width, int height);
+
+  GLFWwindow* window_ = nullptr;
+  std::vector<int> pressed_;
+  glm::dvec2 scroll_{0.0};
+  bool resized_ = false;
+};
+
+}  // namespace eng::platform

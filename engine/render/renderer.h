@@ -1,0 +1,54 @@
+#pragma once
+// Renderer: draws a FrameDesc with the same passes and shaders headless (offscreen, for tests and tools) or into a
+// window. Scene -> offscreen MSAA target (resolved) -> optional ImGui overlay -> read back and/or blit to swapchain.
+#include <memory>
+#include <string>
+#include <vector>
+#include "engine/core/image.h"
+#include "engine/core/result.h"
+#include "engine/render/frame.h"
+
+namespace eng::platform {
+class Window;
+}
+
+namespace eng::render {
+
+struct RendererConfig {
+  int width = 1280, height = 720;  // headless target size; windowed mode follows the framebuffer
+  bool validation = true;          // requires VK_LAYER_KHRONOS_validation (package vulkan-validationlayers)
+  bool vsync = true;
+  int msaa_samples = 4;            // clamped to what the device supports
+};
+
+class Renderer {
+ public:
+  static eng::Result<std::unique_ptr<Renderer>> create_headless(const RendererConfig& cfg);
+  static eng::Result<std::unique_ptr<Renderer>> create_windowed(const RendererConfig& cfg, platform::Window& window);
+  ~Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  // Uploads once; the returned id is valid for the renderer's lifetime.
+  MeshId upload_mesh(const MeshData& mesh);
+  // Headless: renders and waits. Windowed: renders and presents (skips drawing while minimised; recreates the
+  // swapchain after a resize).
+  eng::Result<void> render(const FrameDesc& frame);
+  // The last rendered frame as RGBA8 (sRGB-encoded, alpha 255), top row first. Works in both modes.
+  eng::Result<eng::Image> read_back();
+
+  std::string device_name() const;
+  std::string driver_info() const;
+  int validation_errors() const;
+  int validation_warnings() const;
+  bool validation_active() const;
+  const std::vector<std::string>& validation_messages() const;
+
+  struct Impl;
+
+ private:
+  explicit Renderer(std::unique_ptr<Impl> impl);
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace eng::render

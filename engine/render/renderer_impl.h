@@ -1,0 +1,96 @@
+#pragma once
+// Internal to engine/render: the Renderer's state, shared by the files that record each pass.
+#include <memory>
+#include <vector>
+#include <glm/glm.hpp>
+#include "engine/platform/window.h"
+#include "engine/render/overlay.h"
+#include "engine/render/pipelines.h"
+#include "engine/render/renderer.h"
+#include "engine/render/swapchain.h"
+#include "engine/render/vk_context.h"
+
+namespace eng::render {
+
+// std140 mirror of FrameUniforms in shaders/common.glsl.
+struct FrameUniforms {
+  glm::mat4 view_proj, inv_view_proj, light_view_proj;
+  glm::vec4 eye, sun_dir, sun_color, sky_zenith, sky_horizon, ground_tint, fog, viewport, shadow;
+};
+
+// std430 mirror of InstanceData.
+struct GpuInstance {
+  glm::mat4 model;
+  glm::vec4 color;
+  glm::vec4 params;
+};
+
+struct GpuMesh {
+  Buffer vertices, indices;
+  uint32_t index_count = 0;
+  glm::vec3 lo{0.0f}, hi{0.0f};  // local bounds, for fitting the shadow frustum
+};
+
+struct PerFrame {
+  VkCommandBuffer cmd = VK_NULL_HANDLE;
+  VkFence fence = VK_NULL_HANDLE;
+  VkSemaphore image_ready = VK_NULL_HANDLE;
+  Buffer uniforms, instances, lines, points;
+  VkDescriptorSet set = VK_NULL_HANDLE;
+};
+
+struct Renderer::Impl {
+  RendererConfig cfg;
+  std::unique_ptr<VkContext> ctx;
+  platform::Window* window = nullptr;
+  VkSurfaceKHR surface = VK_NULL_HANDLE;
+  Swapchain swapchain;
+  bool swapchain_dirty = false;
+
+  VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
+  Pipelines pipes;
+  Overlay overlay;
+  Image shadow_map;
+  VkFramebuffer shadow_fb = VK_NULL_HANDLE;
+  VkSampler shadow_sampler = VK_NULL_HANDLE;
+
+  VkExtent2D extent{};
+  Image color_msaa, depth, resolved;
+  VkFramebuffer scene_fb = VK_NULL_HANDLE, overlay_fb = VK_NULL_HANDLE;
+  Buffer readback;
+  bool have_frame = false;
+
+  VkDescriptorPool pool = VK_NULL_HANDLE;
+  std::vector<PerFrame> frames;  // 2 in flight when windowed; 1 headless (it waits every frame anyway)
+  uint32_t frame_index = 0;
+  std::vector<GpuMesh> meshes;
+
+  // Reused every frame so steady-state rendering does no heap churn.
+  std::vector<GpuInstance> gpu_instances;
+  std::vector<uint32_t> order;
+  std::vector<DebugVertex> line_vertices;
+
+  ~Impl();
+  eng::Result<void> init();
+  eng::Result<void> create_targets(VkExtent2D size);
+  void destroy_targets();
+  eng::Result<void> recreate_swapchain();
+  eng::Result<void> ensure(Buffer& b, VkDeviceSize size, VkBufferUsageFlags usage);
+  void write_set(PerFrame& f);
+  FrameUniforms make_uniforms(const FrameDesc& frame);
+  eng::Result<void> upload_frame(PerFrame& f, const FrameDesc& frame);
+  void record(PerFrame& f, const FrameDesc& frame, int swap_image);
+  // Pass recorders, each in the file named after it.
+  void record_shadow_pass(VkCommandBuffer cmd, const FrameDesc& frame);              // shadow_pass.cpp
+  void record_scene_pass(VkCommandBuffer cmd, PerFrame& f, const FrameDesc& frame);  // scene_pass.cpp
+  void record_debug_draw(VkCommandBuffer cmd, PerFrame& f, const FrameDesc& frame);  // debug_draw.cpp
+  void record_overlay_pass(VkCommandBuffer cmd, const FrameDesc& frame);             // renderer.cpp
+  void record_present_blit(VkCommandBuffer cmd, int swap_image);                     // present_blit.cpp
+  // One instanced draw per run of equal meshes in the mesh-sorted opaque list (shared by shadow + scene).
+  void draw_opaque(VkCommandBuffer cmd, const FrameDesc& frame);
+  void draw_mesh(VkCommandBuffer cmd, MeshId mesh, uint32_t first_instance, uint32_t count);
+  static void set_viewport(VkCommandBuffer cmd, VkExtent2D e);
+  eng::Result<void> render(const FrameDesc& frame);
+};
+
+}  // namespace eng::render
