@@ -26,7 +26,7 @@ struct ConstraintRow {
   int partner = -1;   // Friction: index of the other tangent row of the pair (first row of the pair)
   double bias = 0.0;  // target velocity term (J v + bias -> 0)
   double mass_scale = 1.0, impulse_scale = 0.0;  // Box2D v3 soft step
-  double inv_diag = 0.0;  // 1 / (J M^-1 J^T)_ii
+  double inv_diag = 0.0;  // 1 / ((J M^-1 J^T)_ii + solver.regularization)
   double lambda = 0.0;    // accumulated impulse
   double mu = 0.0;        // friction coefficient (Friction rows)
   double coupling = 0.0;  // Friction rows: J_t M^-1 J_n^T with the contact's normal row
@@ -35,6 +35,10 @@ struct ConstraintRow {
 
 struct Data {
   VecX q, v, qacc, tau;  // tau: joint torques, user-set, persistent until changed
+  // Per-DoF reference of the implicit joint springs (Body::stiffness), user-set, default 0 = rest pose:
+  // hinge: target angle; ball: target rotation vector (angle * axis, relative to X_tree); free: unused.
+  // With stiffness + damping this is an unconditionally stable PD servo (integrated implicitly).
+  VecX spring_ref;
   double time = 0.0;
 
   // kinematics (forward_kinematics)
@@ -57,7 +61,7 @@ struct Data {
   std::vector<Vec6> ws_p;               // articulated bias forces per body
   std::vector<Mat6> ws_U, ws_Dinv;      // ABA: U = I^A S, D^-1 (top-left nd x nd) per body
   std::vector<Vec6> ws_u, ws_c;         // ABA: u = tau - S^T p^A, c = Sdot qdot per body
-  MatX M;                               // joint-space inertia (+ armature, implicit damping)
+  MatX M;                               // after a step: CRBA M + armature + dt D + dt^2 K (step.h)
   MatX LD;                              // LTDL factor of M (RBDA 6.5): strict lower L, diagonal D
   VecX bias, vtmp, vtmp2, v_free, passive;
   // constraint rows: J sparse (only ancestor DoFs of the two bodies are nonzero; an index may repeat
@@ -74,6 +78,8 @@ struct Data {
   std::vector<ContactPoint> cp_tmp;
 };
 
-Data make_data(const Model& m);  // q at rest: identity quats, zero angles; v = 0
+// Build the model (add_body/add_geom), finalize(), then make_data (throws if not finalized).
+// q at rest: identity quats, zero angles, free bodies at their X_tree; v = 0.
+Data make_data(const Model& m);
 
 }  // namespace eng::physics

@@ -326,9 +326,15 @@ double potential_energy(const Model& m, const Data& d) {
     const Body& b = m.bodies[i];
     U -= b.mass * m.gravity.dot(d.com_world[i]);
     if (b.stiffness > 0) {
-      if (b.joint == JointType::Hinge) U += 0.5 * b.stiffness * d.q[b.q_index] * d.q[b.q_index];
-      if (b.joint == JointType::Ball)
-        U += 0.5 * b.stiffness * quat_log(quat_from(d.q.data() + b.q_index)).squaredNorm();
+      const bool has_ref = d.spring_ref.size() == m.nv;
+      if (b.joint == JointType::Hinge) {
+        const double e = d.q[b.q_index] - (has_ref ? d.spring_ref[b.v_index] : 0.0);
+        U += 0.5 * b.stiffness * e * e;
+      }
+      if (b.joint == JointType::Ball) {
+        const Quat qref = has_ref ? quat_exp(d.spring_ref.segment<3>(b.v_index)) : Quat::Identity();
+        U += 0.5 * b.stiffness * quat_log(qref.conjugate() * quat_from(d.q.data() + b.q_index)).squaredNorm();
+      }
     }
   }
   return U;

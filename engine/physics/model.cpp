@@ -71,13 +71,14 @@ void Model::finalize() {
 }
 
 Data make_data(const Model& m) {
-  assert(m.finalized);
+  if (!m.finalized) throw std::logic_error("make_data: call Model::finalize() first");
   const int nb = static_cast<int>(m.bodies.size());
   Data d;
   d.q = VecX::Zero(m.nq);
   d.v = VecX::Zero(m.nv);
   d.qacc = VecX::Zero(m.nv);
   d.tau = VecX::Zero(m.nv);
+  d.spring_ref = VecX::Zero(m.nv);
   for (int i = 1; i < nb; ++i) {
     const Body& b = m.bodies[i];
     if (b.joint == JointType::Free) {  // rest pose of a free body = X_tree (in the world)

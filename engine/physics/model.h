@@ -17,7 +17,8 @@
 //      Hinge: q = angle about `axis` (body frame), v = rate. nq = nv = 1.
 //      Fixed: nq = nv = 0 (welded with X_tree).
 //  * Per-DoF passive terms: damping (N m s/rad, or N s/m for free linear DoFs), armature (added to
-//    the diagonal of M), stiffness (spring toward q = 0 / identity quat; ball uses the rotation vector).
+//    the diagonal of M), stiffness (spring toward Data::spring_ref, default the rest pose q = 0 /
+//    identity quat; ball uses the rotation vector).
 //    Damping and stiffness are integrated implicitly (see step.h).
 //  * Limits: hinge [lower, upper] (rad) when limited; ball swing cone half-angle swing_limit and twist
 //    about the body Z axis |twist| <= twist_limit (rad, 0 = no limit). Free: no limits.
@@ -43,7 +44,7 @@ struct Body {
   Mat3 inertia = Mat3::Zero();   // about the com, body frame
   double damping = 0.0;          // per DoF
   double armature = 0.0;         // per DoF
-  double stiffness = 0.0;        // spring toward q = 0 rest, per DoF
+  double stiffness = 0.0;        // spring toward Data::spring_ref (default rest), per DoF
   bool limited = false;          // hinge range
   double lower = 0.0, upper = 0.0;              // hinge limits (rad)
   double swing_limit = 0.0, twist_limit = 0.0;  // ball limits (rad), 0 = none; twist about body Z
@@ -76,6 +77,7 @@ struct SolverOptions {
   double contact_margin = 0.04;         // speculative contact distance (m) given to the narrowphase
   FrictionModel friction = FrictionModel::Cone;
   bool warm_start = true;
+  double regularization = 1e-3;  // added to each row's J M^-1 J^T (1/kg): bounds degenerate rows
   int max_contacts = 512;  // capacity preallocated in make_data; extra contacts are dropped
 };
 

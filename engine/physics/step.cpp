@@ -249,9 +249,12 @@ void passive_forces(const Model& m, Data& d) {
     for (int k = 0; k < b.nv; ++k) d.passive[b.v_index + k] = -b.damping * d.v[b.v_index + k];
     if (b.stiffness > 0) {
       if (b.joint == JointType::Hinge) {
-        d.passive[b.v_index] -= b.stiffness * (d.q[b.q_index] + h * d.v[b.v_index]);
+        const double e = d.q[b.q_index] - d.spring_ref[b.v_index];
+        d.passive[b.v_index] -= b.stiffness * (e + h * d.v[b.v_index]);
       } else if (b.joint == JointType::Ball) {
-        const Vec3 rv = quat_log(quat_from(d.q.data() + b.q_index));
+        // error rotation (body frame): log(q_ref^-1 q)
+        const Quat qref = quat_exp(d.spring_ref.segment<3>(b.v_index));
+        const Vec3 rv = quat_log(qref.conjugate() * quat_from(d.q.data() + b.q_index));
         for (int k = 0; k < 3; ++k)
           d.passive[b.v_index + k] -= b.stiffness * (rv[k] + h * d.v[b.v_index + k]);
       }
@@ -300,7 +303,10 @@ void solve_constraints(const Model& m, Data& d) {
     double* W = d.MinvJT.data() + static_cast<size_t>(r) * nv;
     for (int i = 0; i < nv; ++i) W[i] = X[static_cast<size_t>(i) * nr + r];
     const double a = sparse_dot(d.J_idx.data() + row.nz_begin, d.J_val.data() + row.nz_begin, row.nz_count, W);
-    row.inv_diag = a > 1e-12 ? 1.0 / a : 0.0;
+    // a (Delassus diagonal) ~ 0 means the DoFs can barely move along this row (contact normal through
+    // the joint axes): regularise (constraint force mixing, like MuJoCo's R) so the push-out impulse
+    // and the velocity it injects stay bounded.
+    row.inv_diag = a > 1e-12 ? 1.0 / (a + m.solver.regularization) : 0.0;
   }
   // warm start (clamp old impulses into the current feasible set)
   for (int r = 0; r < nr; ++r) {

@@ -22,6 +22,10 @@
 //    speculative gap C > 0. Why: it is the implicit spring-damper (same family as MuJoCo's solref
 //    timeconst/dampratio) but in a PGS-friendly impulse form, unconditionally stable, no tuning per
 //    mass, and the push-out speed is capped so overlapping limbs separate calmly. No restitution.
+//  * Each row's Delassus diagonal gets + solver.regularization (constraint force mixing, as MuJoCo's
+//    R) so rows the DoFs can barely move (normal through joint axes) stay bounded.
+//  * Per contact the (normal, t1, t2) rows are solved as one block: one pass for the three J v, the
+//    normal update, the tangents corrected by J_t M^-1 J_n^T dlambda_n, one pass updating v.
 //  * Friction: Coulomb, per contact two tangent rows; Cone (default) projects the tangential impulse
 //    onto the disk |lambda_t| <= mu lambda_n, Pyramid clamps each row.
 //  * Quaternions are integrated on the manifold q <- q * exp(w_body dt / 2) and renormalised.

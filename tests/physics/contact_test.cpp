@@ -213,3 +213,20 @@ TEST(Contact, PairFilteringRules) {
   EXPECT_TRUE(pairs_in_contact(build(false, 0xffffffffu)).empty());  // self collision off
   EXPECT_TRUE(pairs_in_contact(build(true, 0u)).empty());            // b's mask excludes everything
 }
+TEST(Contact, StackOfThreeCratesStaysPut) {
+  Model m;
+  m.add_geom(plane());
+  for (int i = 0; i < 3; ++i) add_free_box(m, at({0.01 * i, 0, 0.2 + 0.4 * i}), {0.2, 0.2, 0.2}, 10.0);
+  m.finalize();
+  Data d = make_data(m);
+  while (d.time < 1.0) step(m, d);
+  const VecX q1 = d.q;
+  double vmax = 0;
+  while (d.time < 10.0) {
+    step(m, d);
+    vmax = std::max(vmax, d.v.cwiseAbs().maxCoeff());
+  }
+  for (int i = 0; i < 3; ++i) EXPECT_LT((d.q.segment<3>(7 * i) - q1.segment<3>(7 * i)).norm(), 1e-3) << "box " << i;
+  EXPECT_LT(vmax, 1e-3);
+  EXPECT_NEAR(d.q[14 + 2], 1.0, 0.01);  // top box centre
+}
