@@ -21,6 +21,9 @@ glm::mat4 to_mat4(const Eigen::Matrix3d& R, const Eigen::Vector3d& p) {
 
 glm::vec4 rgba(const Eigen::Vector3f& c, float a = 1.0f) { return {c.x(), c.y(), c.z(), a}; }
 
+// A body that blew up (NaN or far away) is not drawn: the rasteriser must never see non-finite vertices.
+bool drawable(const eng::physics::Pose& x) { return x.p.allFinite() && x.R.allFinite() && x.p.norm() < 1e4; }
+
 }  // namespace
 
 SceneView make_scene_view(const World& w, eng::render::Renderer& r) {
@@ -66,9 +69,10 @@ eng::render::Camera camera_preset(const std::string& name, const World& w) {
   if (name == "closeup") {
     // Boxer 0 from the front-left, chest height.
     const auto& s = w.arena.stances[0];
-    const glm::vec3 at(float(s.position.x()), float(s.position.y()), 1.05f);
+    const float base = float(std::min(s.lead_top, s.rear_top));
+    const glm::vec3 at(float(s.position.x()), float(s.position.y()), base + 1.05f);
     c.target = at;
-    c.eye = at + glm::vec3(1.0f, -1.7f, 0.25f);
+    c.eye = at + glm::vec3(1.3f, -2.3f, 0.15f);
   } else if (name == "side") {
     c.target = {0.0f, 0.0f, 1.0f};
     c.eye = {0.0f, -4.8f, 1.4f};
@@ -98,6 +102,7 @@ void fill_frame(const World& w, const SceneView& v, eng::render::FrameDesc& f) {
   }
   for (size_t i = 0; i < w.loose.size(); ++i) {
     const auto& x = w.data.x[w.loose[i].body];
+    if (!drawable(x)) continue;
     Instance in;
     in.mesh = v.loose_mesh[i];
     in.model = to_mat4(x.R, x.p);
@@ -110,6 +115,7 @@ void fill_frame(const World& w, const SceneView& v, eng::render::FrameDesc& f) {
   for (const Boxer& b : w.boxers) {
     for (const BonePart& part : v.boxer_parts) {
       const auto& x = w.data.x[b.bodies.body[part.bone]];
+      if (!drawable(x)) continue;
       Instance in;
       in.mesh = part.mesh;
       in.model = to_mat4(x.R, x.p);

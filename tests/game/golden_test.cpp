@@ -79,9 +79,9 @@ void check_golden(const std::string& name, std::vector<std::string> args) {
 }  // namespace
 
 TEST(Golden, ArenaFromTheDefaultCameraMatchesGolden) {
-  check_golden("arena_default", {"--scenario", "arena", "--seed", "1", "--seconds", "0.5", "--camera", "default"});
+  check_golden("arena_default", {"--scenario", "arena", "--seed", "1", "--seconds", "0.05", "--camera", "default"});
 }
 
 TEST(Golden, BoxerCloseUpMatchesGolden) {
-  check_golden("boxer_closeup", {"--scenario", "arena", "--seed", "1", "--seconds", "0.5", "--camera", "closeup"});
+  check_golden("boxer_closeup", {"--scenario", "arena", "--seed", "1", "--seconds", "0.05", "--camera", "closeup"});
 }
