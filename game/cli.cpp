@@ -47,6 +47,7 @@ std::string help_text() {
 
 usage: boxing [flags]            play (window; headless when there is no display)
        boxing graph [flags]      build the motion graph and write its report
+       boxing clips --sheet DIR  render a contact sheet (PNG) of every clip into DIR
 
 flags:
   --help                 this text
@@ -82,8 +83,8 @@ window controls: F12 screenshot (to out/), H toggle overlay, G toggle ghost, C c
 eng::Result<Options> parse_cli(const std::vector<std::string>& args) {
   Options o;
   size_t i = 0;
-  if (!args.empty() && args[0] == "graph") {
-    o.command = "graph";
+  if (!args.empty() && (args[0] == "graph" || args[0] == "clips")) {
+    o.command = args[0];
     i = 1;
   }
   auto need_value = [&](const std::string& flag) -> std::optional<std::string> {
@@ -140,7 +141,7 @@ eng::Result<Options> parse_cli(const std::vector<std::string>& args) {
       if (!kServos.count(*v)) return bad("unknown servo '" + *v + "' (world, person, parent, parent-meathook)");
       o.servo = *v;
     } else if (flag == "--screenshot" || flag == "--report" || flag == "--frames-dir" || flag == "--dot" ||
-               flag == "--content") {
+               flag == "--content" || flag == "--sheet") {
       auto v = value();
       if (!v || v->empty()) return missing();
       if (flag == "--screenshot") {
@@ -152,6 +153,9 @@ eng::Result<Options> parse_cli(const std::vector<std::string>& args) {
       } else if (flag == "--dot") {
         if (o.command != "graph") return bad("--dot belongs to 'boxing graph'");
         o.graph_dot = *v;
+      } else if (flag == "--sheet") {
+        if (o.command != "clips") return bad("--sheet belongs to 'boxing clips'");
+        o.sheet_dir = *v;
       } else if (flag == "--content") {
         o.content_dir = *v;
       } else {
@@ -189,6 +193,7 @@ eng::Result<Options> parse_cli(const std::vector<std::string>& args) {
                        flag == "--no-overlay" || flag == "--no-validation" || flag == "--no-vsync"))
       return bad("flag " + flag + " takes no value");
   }
+  if (o.command == "clips" && o.sheet_dir.empty() && !o.help) return bad("'boxing clips' needs --sheet DIR");
   return o;
 }
 

@@ -10,7 +10,7 @@
 namespace boxing {
 
 struct Options {
-  std::string command = "play";        // "play" (the game) or "graph" (motion-graph tool)
+  std::string command = "play";        // "play" (the game), "graph" (motion-graph tool), "clips" (contact sheets)
   bool help = false;
   bool headless = false;
   bool headless_forced = false;        // --headless given (vs chosen because there is no display)
@@ -40,6 +40,8 @@ struct Options {
   // graph tool
   std::string graph_report;
   std::string graph_dot;
+  // clips tool
+  std::string sheet_dir;
 };
 
 eng::Result<Options> parse_cli(const std::vector<std::string>& args);

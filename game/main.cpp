@@ -5,6 +5,7 @@
 
 #include "game/app.h"
 #include "game/cli.h"
+#include "game/contact_sheet.h"
 #include "game/graph_tool.h"
 
 int main(int argc, char** argv) {
@@ -18,6 +19,7 @@ int main(int argc, char** argv) {
     std::fputs(boxing::help_text().c_str(), stdout);
     return 0;
   }
+  if (options->command == "clips") return boxing::run_contact_sheets(*options);
   if (options->command == "graph") return boxing::run_graph_tool(*options);
   return boxing::run(*options);
 }

@@ -26,17 +26,10 @@ bool drawable(const eng::physics::Pose& x) { return x.p.allFinite() && x.R.allFi
 
 }  // namespace
 
-SceneView make_scene_view(const World& w, eng::render::Renderer& r) {
-  SceneView v;
-  for (const Crate& c : w.arena.crates)
-    v.crate_mesh.push_back(r.upload_mesh(eng::render::make_box_mesh(
-        glm::vec3(float(c.half_extents.x()), float(c.half_extents.y()), float(c.half_extents.z())))));
-  for (const LooseBody& l : w.loose)
-    v.loose_mesh.push_back(r.upload_mesh(eng::render::make_box_mesh(glm::vec3(
-        float(l.shape.half_extents.x()), float(l.shape.half_extents.y()), float(l.shape.half_extents.z())))));
-  // The boxer's render meshes hang off its bone nodes, in the bone's frame.
-  const auto& scene = w.boxer_scene;
-  const auto& desc = w.boxer_desc;
+std::vector<BonePart> upload_character_parts(const eng::assets::GltfScene& scene,
+                                             const eng::assets::CharacterDesc& desc, eng::render::Renderer& r) {
+  std::vector<BonePart> parts;
+  // The character's render meshes hang off its bone nodes, in the bone's frame.
   for (int bone = 0; bone < desc.skeleton.size(); ++bone) {
     const auto& node = scene.nodes[desc.bone_node[bone]];
     if (node.mesh < 0) continue;
@@ -56,9 +49,23 @@ SceneView make_scene_view(const World& w, eng::render::Renderer& r) {
         part.material.metallic = mat.metallic;
         part.team = mat.name == "team" || mat.name == "glove" || mat.name == "shorts";
       }
-      v.boxer_parts.push_back(part);
+      parts.push_back(part);
     }
   }
+  return parts;
+}
+
+glm::mat4 pose_matrix(const Eigen::Quaterniond& q, const Eigen::Vector3d& p) { return to_mat4(q.toRotationMatrix(), p); }
+
+SceneView make_scene_view(const World& w, eng::render::Renderer& r) {
+  SceneView v;
+  for (const Crate& c : w.arena.crates)
+    v.crate_mesh.push_back(r.upload_mesh(eng::render::make_box_mesh(
+        glm::vec3(float(c.half_extents.x()), float(c.half_extents.y()), float(c.half_extents.z())))));
+  for (const LooseBody& l : w.loose)
+    v.loose_mesh.push_back(r.upload_mesh(eng::render::make_box_mesh(glm::vec3(
+        float(l.shape.half_extents.x()), float(l.shape.half_extents.y()), float(l.shape.half_extents.z())))));
+  v.boxer_parts = upload_character_parts(w.boxer_scene, w.boxer_desc, r);
   v.ghost = w.options.ghost;
   return v;
 }

@@ -23,6 +23,11 @@ struct SceneView {
   bool ghost = false;
 };
 
+// Uploads a glTF character's per-bone render meshes (materials named team / glove / shorts take a team colour).
+std::vector<BonePart> upload_character_parts(const eng::assets::GltfScene& scene,
+                                             const eng::assets::CharacterDesc& desc, eng::render::Renderer& r);
+glm::mat4 pose_matrix(const Eigen::Quaterniond& q, const Eigen::Vector3d& p);
+
 // Uploads every mesh the world needs (once).
 SceneView make_scene_view(const World& w, eng::render::Renderer& r);
 
