@@ -88,9 +88,14 @@ eng::Result<void> Renderer::Impl::upload_frame(PerFrame& f, const FrameDesc& fra
   std::stable_sort(order.begin() + ghost_base, order.end(), [&](uint32_t a, uint32_t b) { return dist(a) > dist(b); });
   for (size_t k = ghost_base; k < order.size(); ++k) push(frame.ghosts[order[k]]);
   if (gpu_instances.empty()) gpu_instances.push_back({});  // keep the bound SSBO non-empty
-  const VkBuffer old_ssbo = f.instances.buffer;
-  if (auto r = ensure(f.instances, gpu_instances.size() * sizeof(GpuInstance), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT); !r) return r;
-  if (f.instances.buffer != old_ssbo) write_set(f);
+  // The descriptor set must be rewritten whenever the SSBO was reallocated. Do not detect that by comparing
+  // VkBuffer handles: a driver may hand out the just-freed handle again (lavapipe's handles are heap pointers,
+  // so the new buffer often has the old handle's value), which left the set pointing at the destroyed buffer
+  // and crashed lavapipe without the validation layer (whose wrapped handles are always unique).
+  bool reallocated = false;
+  if (auto r = ensure(f.instances, gpu_instances.size() * sizeof(GpuInstance), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, &reallocated); !r)
+    return r;
+  if (reallocated) write_set(f);
   std::memcpy(f.instances.mapped, gpu_instances.data(), gpu_instances.size() * sizeof(GpuInstance));
 
   line_vertices.clear();

@@ -109,14 +109,17 @@ eng::Result<void> Renderer::Impl::init() {
   return create_targets({static_cast<uint32_t>(cfg.width), static_cast<uint32_t>(cfg.height)});
 }
 
-eng::Result<void> Renderer::Impl::ensure(Buffer& b, VkDeviceSize size, VkBufferUsageFlags usage) {
+eng::Result<void> Renderer::Impl::ensure(Buffer& b, VkDeviceSize size, VkBufferUsageFlags usage, bool* reallocated) {
+  if (reallocated) *reallocated = false;
   if (b.buffer && b.size >= size) return {};
+  // The caller waited on this frame's fence, so the GPU no longer uses the old buffer.
   // Grow geometrically so a slowly growing scene reallocates only a handful of times.
   const VkDeviceSize cap = std::max(size, b.size * 2);
   ctx->destroy(b);
   auto nb = ctx->create_buffer(cap, usage, true);
   if (!nb) return eng::make_error(nb.error());
   b = *nb;
+  if (reallocated) *reallocated = true;
   return {};
 }
 

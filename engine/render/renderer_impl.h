@@ -75,7 +75,9 @@ struct Renderer::Impl {
   eng::Result<void> create_targets(VkExtent2D size);
   void destroy_targets();
   eng::Result<void> recreate_swapchain();
-  eng::Result<void> ensure(Buffer& b, VkDeviceSize size, VkBufferUsageFlags usage);
+  // Makes `b` hold at least `size` bytes (host-visible, mapped), reallocating geometrically; sets *reallocated when
+  // the buffer was replaced, so anything referring to it (descriptor sets) can be updated.
+  eng::Result<void> ensure(Buffer& b, VkDeviceSize size, VkBufferUsageFlags usage, bool* reallocated = nullptr);
   void write_set(PerFrame& f);
   FrameUniforms make_uniforms(const FrameDesc& frame);
   eng::Result<void> upload_frame(PerFrame& f, const FrameDesc& frame);
