@@ -1,0 +1,39 @@
+#include "game/pose_source.h"
+
+namespace boxing {
+
+PoseSource PoseSource::looping_clip(const eng::anim::Clip& clip) {
+  PoseSource s;
+  s.clip_ = &clip;
+  return s;
+}
+
+PoseSource PoseSource::graph_walk(const eng::anim::MotionGraph& graph, uint64_t seed) {
+  PoseSource s;
+  s.walker_ = std::make_unique<eng::anim::GraphWalker>(graph, seed, "guard");
+  return s;
+}
+
+const std::string& PoseSource::current_clip() const {
+  return walker_ ? walker_->current_clip() : clip_->name;
+}
+
+eng::anim::PoseSample PoseSource::tick(double dt) {
+  clip_time_[current_clip()] += dt;
+  if (!walker_) {
+    eng::anim::PoseSample s = eng::anim::sample_clip(*clip_, t_);
+    t_ += dt;
+    return s;
+  }
+  eng::anim::PoseSample s = walker_->tick(dt);
+  // The crates are a small stage: a walk that has wandered off its spot steps back toward it (the way a player
+  // or an AI keeps a boxer in range), using the graph's own footwork clips.
+  const Eigen::Vector2d drift = s.pose.root_position.head<2>();
+  if (!walker_->has_plan() && drift.norm() > leash_) {
+    const Eigen::Vector3d fwd = s.pose.rotation[0] * Eigen::Vector3d::UnitX();
+    walker_->request_clip(fwd.head<2>().dot(drift) > 0 ? "step_back" : "step_forward");
+  }
+  return s;
+}
+
+}  // namespace boxing

@@ -1,0 +1,36 @@
+#pragma once
+// Where a boxer's desired motion comes from: a looping keyframed clip (guard, for the stand and push scenarios)
+// or a random walk of the motion graph (graph-walk, match). Either way the result is a PoseSample in the clip's
+// own floor frame (authored facing +X at the origin); the boxer places it on its stance.
+#include <map>
+#include <memory>
+#include <string>
+
+#include "engine/anim/clip.h"
+#include "engine/anim/motion_graph.h"
+
+namespace boxing {
+
+class PoseSource {
+ public:
+  static PoseSource looping_clip(const eng::anim::Clip& clip);
+  static PoseSource graph_walk(const eng::anim::MotionGraph& graph, uint64_t seed);
+
+  // The desired pose at the current time, then advances by dt. Keeps a graph walk near its start: when the root
+  // has drifted more than `leash` metres along its heading, it asks the graph for a step back / forward.
+  eng::anim::PoseSample tick(double dt);
+  const std::string& current_clip() const;
+  bool is_walk() const { return walker_ != nullptr; }
+  eng::anim::GraphWalker* walker() { return walker_.get(); }
+  // Seconds spent per clip so far.
+  const std::map<std::string, double>& clip_time() const { return clip_time_; }
+
+ private:
+  const eng::anim::Clip* clip_ = nullptr;
+  double t_ = 0.0;
+  std::unique_ptr<eng::anim::GraphWalker> walker_;
+  std::map<std::string, double> clip_time_;
+  double leash_ = 0.25;
+};
+
+}  // namespace boxing
