@@ -219,3 +219,41 @@ TEST(Broadphase, ShapeBoundsContainTheShape) {
   const Aabb p = shape_aabb(plane(), at({0, 0, 0}), 0.0);
   EXPECT_LT(p.lo.x(), -1e10);
 }
+
+// Closed-form cases re-posed under several rigid motions of the whole scene: the depth must not change, the
+// normal and point must move with the scene, the point count must stay (a frame-independent narrowphase).
+TEST(Narrowphase, ClosedFormCasesAreInvariantUnderRigidMotionsOfTheScene) {
+  struct Case {
+    Shape a;
+    Pose xa;
+    Shape b;
+    Pose xb;
+    int n;
+    double depth;
+    Vec3 normal;
+  };
+  const Case cases[] = {
+      {sphere(0.5), at({0, 0, 0}), sphere(0.3), at({0.7, 0, 0}), 1, 0.1, Vec3::UnitX()},
+      {sphere(0.2), at({0, 0, 0.5}), capsule(0.1, 0.5), at({0, 0.25, 0.5}, rot(M_PI / 2, Vec3::UnitY())), 1, 0.05,
+       Vec3::UnitY()},
+      {capsule(0.1, 0.4), at({0, 0, 0}), capsule(0.1, 0.4), at({0, 0.15, 0}), 2, 0.05, Vec3::UnitY()},
+      {box(1, 1, 0.5), at({0, 0, 0}), sphere(0.25), at({0.2, -0.1, 0.7}), 1, 0.05, Vec3::UnitZ()},
+      {box(1, 1, 0.5), at({0, 0, 0}), capsule(0.1, 0.3), at({0, 0, 0.58}, rot(M_PI / 2, Vec3::UnitX())), 2, 0.02,
+       Vec3::UnitZ()},
+      {box(1, 1, 0.5), at({0, 0, 0}), box(0.3, 0.2, 0.1), at({0.1, 0.1, 0.59}), 4, 0.01, Vec3::UnitZ()},
+  };
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (const Case& k : cases) {
+    for (int r = 0; r < 6; ++r) {
+      const Mat3 Rw = r == 0 ? Mat3::Identity() : rot(3.0 * u(rng), Vec3(u(rng), u(rng), u(rng)) + Vec3(0, 0, 1e-3));
+      const Pose W{Rw, Vec3(u(rng), u(rng), u(rng))};
+      ContactPoint c[4];
+      ASSERT_EQ(collide(k.a, W * k.xa, k.b, W * k.xb, c), k.n) << "case depth " << k.depth << " motion " << r;
+      for (int i = 0; i < k.n; ++i) {
+        EXPECT_NEAR(c[i].depth, k.depth, 1e-9);
+        EXPECT_TRUE(c[i].normal.isApprox(Rw * k.normal, 1e-9)) << c[i].normal.transpose();
+      }
+    }
+  }
+}
