@@ -31,6 +31,11 @@ struct ConstraintRow {
   double mu = 0.0;        // friction coefficient (Friction rows)
   double coupling = 0.0;  // Friction rows: J_t M^-1 J_n^T with the contact's normal row
   int nz_begin = 0, nz_count = 0;  // sparse J row: entries [nz_begin, nz_begin + nz_count) of J_idx/J_val
+  // DoF range the row can affect: the DoF block(s) (Model::block_begin) of its body / bodies (for a
+  // contact between two blocks, the span of both). J and W = M^-1 J^T are zero outside it, so W is
+  // stored only over [j_begin, j_end), at MinvJT[w_off ...], and every solver pass is restricted to it.
+  int j_begin = 0, j_end = 0;
+  size_t w_off = 0;
 };
 
 struct Data {
@@ -54,6 +59,7 @@ struct Data {
 
   // contacts of the current step (and the previous one, for warm start)
   std::vector<Contact> contacts, prev_contacts;
+  int warm_cursor = 0;  // add_contact: where the warm-start search in prev_contacts resumes
 
   // ---- workspace (preallocated) ----
   std::vector<Vec6> ws_a, ws_f;         // spatial accelerations / forces per body
@@ -65,11 +71,13 @@ struct Data {
   MatX LD;                              // LTDL factor of M (RBDA 6.5): strict lower L, diagonal D
   VecX bias, vtmp, vtmp2, v_free, passive;
   // constraint rows: J sparse (only ancestor DoFs of the two bodies are nonzero; an index may repeat
-  // when the bodies share ancestors), M^-1 J^T dense row-major, capacity max_rows x nv
+  // when the bodies share ancestors), M^-1 J^T dense over each row's [j_begin, j_end) (packed; capacity
+  // max_rows x nv)
   std::vector<ConstraintRow> rows;
+  std::vector<int> row_order;    // scratch: rows grouped by DoF range for the multi-RHS solve
   std::vector<int> J_idx;
   std::vector<double> J_val, MinvJT;
-  std::vector<double> MinvJT_T;  // DoF-major scratch for the multi-RHS solve (nv x max_rows)
+  std::vector<double> MinvJT_T;  // DoF-major scratch for the multi-RHS solve of one row group
   int max_rows = 0;
   // collision workspace
   std::vector<Aabb> aabbs;

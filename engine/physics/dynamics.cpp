@@ -2,6 +2,7 @@
 #include "engine/physics/dynamics.h"
 
 #include <cmath>
+#include <cstddef>
 
 #include "engine/physics/spatial.h"
 
@@ -126,7 +127,16 @@ void crba(const Model& m, const Data& d_in, MatX& M) {
     const int p = m.bodies[i].parent;
     if (p > 0) d.ws_Ic[p] += d.ws_Ic[i];
   }
-  M.setZero(m.nv, m.nv);  // no reallocation when already sized
+  // M is block diagonal over the DoF blocks (articulations): entries outside them are never written,
+  // so a correctly sized M only needs its diagonal blocks cleared (O(sum block^2), not O(nv^2)).
+  if (M.rows() != m.nv || M.cols() != m.nv) {
+    M.setZero(m.nv, m.nv);
+  } else {
+    for (size_t b = 0; b + 1 < m.block_begin.size(); ++b) {
+      const int b0 = m.block_begin[b], nb = m.block_begin[b + 1] - b0;
+      M.block(b0, b0, nb, nb).setZero();
+    }
+  }
   for (int j = 0; j < m.nv; ++j) {
     const Vec6 F = d.ws_Ic[m.dof_body[j]] * d.cdof[j];
     for (int k = j; k >= 0; k = m.dof_parent[k]) {
@@ -232,28 +242,33 @@ void solve_ltdl(const Model& m, const MatX& LD, double* x) {
 }
 
 void solve_ltdl_multi(const Model& m, const MatX& LD, double* X, int nrhs, int ld) {
+  solve_ltdl_multi(m, LD, X, nrhs, ld, 0, m.nv);
+}
+
+void solve_ltdl_multi(const Model& m, const MatX& LD, double* X0, int nrhs, int ld, int j0, int j1) {
   const int n = m.nv;
   const int* ab = m.dof_anc_begin.data();
   const int* an = m.dof_anc.data();
   const double* L = LD.data();
-  for (int i = n - 1; i >= 0; --i) {
-    const double* xi = X + static_cast<size_t>(i) * ld;
+  // row of DoF i: X0 + (i - j0) * ld (a block's ancestors stay inside [j0, j1))
+  for (int i = j1 - 1; i >= j0; --i) {
+    const double* xi = X0 + static_cast<ptrdiff_t>(i - j0) * ld;
     for (int k = ab[i]; k < ab[i + 1]; ++k) {
-      const double l = L[i + an[k] * n];
-      double* xj = X + static_cast<size_t>(an[k]) * ld;
+      const double l = L[i + static_cast<ptrdiff_t>(an[k]) * n];
+      double* xj = X0 + static_cast<ptrdiff_t>(an[k] - j0) * ld;
       for (int r = 0; r < nrhs; ++r) xj[r] -= l * xi[r];
     }
   }
-  for (int i = 0; i < n; ++i) {
-    const double dinv = 1.0 / L[i + i * n];
-    double* xi = X + static_cast<size_t>(i) * ld;
+  for (int i = j0; i < j1; ++i) {
+    const double dinv = 1.0 / L[i + static_cast<ptrdiff_t>(i) * n];
+    double* xi = X0 + static_cast<ptrdiff_t>(i - j0) * ld;
     for (int r = 0; r < nrhs; ++r) xi[r] *= dinv;
   }
-  for (int i = 0; i < n; ++i) {
-    double* xi = X + static_cast<size_t>(i) * ld;
+  for (int i = j0; i < j1; ++i) {
+    double* xi = X0 + static_cast<ptrdiff_t>(i - j0) * ld;
     for (int k = ab[i]; k < ab[i + 1]; ++k) {
-      const double l = L[i + an[k] * n];
-      const double* xj = X + static_cast<size_t>(an[k]) * ld;
+      const double l = L[i + static_cast<ptrdiff_t>(an[k]) * n];
+      const double* xj = X0 + static_cast<ptrdiff_t>(an[k] - j0) * ld;
       for (int r = 0; r < nrhs; ++r) xi[r] -= l * xj[r];
     }
   }

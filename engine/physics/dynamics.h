@@ -38,6 +38,9 @@ inline void solve_ltdl(const Model& m, const MatX& LD, VecX& x) { solve_ltdl(m, 
 // Same for nrhs right-hand sides at once, stored DoF-major: X[i * ld + r] (i = DoF, r = rhs). The
 // inner loop over r has no dependency chain, so this is much faster than nrhs single solves.
 void solve_ltdl_multi(const Model& m, const MatX& LD, double* X, int nrhs, int ld);
+// Same restricted to the DoFs [j_begin, j_end), which must be a union of whole DoF blocks
+// (Model::block_begin); X[(i - j_begin) * ld + r] holds DoF i. Cost O((j_end - j_begin) * depth * nrhs).
+void solve_ltdl_multi(const Model& m, const MatX& LD, double* X, int nrhs, int ld, int j_begin, int j_end);
 
 // Jacobians (world frame). J is resized to the stated size (allocation outside the step is fine).
 // point_jacobian: 3 x nv, d(point velocity)/dv for a point fixed to `body` at world_point.

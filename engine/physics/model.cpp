@@ -1,11 +1,11 @@
 #include "engine/physics/model.h"
 
+#include <algorithm>
 #include <cassert>
 #include <stdexcept>
 
 #include "engine/physics/data.h"
 #include "engine/physics/spatial.h"
-#include <algorithm>
 
 namespace eng::physics {
 
@@ -67,6 +67,30 @@ void Model::finalize() {
     for (int j = dof_parent[i]; j >= 0; j = dof_parent[j]) dof_anc.push_back(j);
     dof_anc_begin.push_back(static_cast<int>(dof_anc.size()));
   }
+  // DoF blocks: per articulation root the interval [min DoF, max DoF]; overlapping intervals merged
+  // (with bodies added articulation by articulation each block is exactly one articulation).
+  {
+    std::vector<int> lo(bodies.size(), nv), hi(bodies.size(), -1);
+    for (int i = 0; i < nv; ++i) {
+      const int r = bodies[dof_body[i]].root;
+      lo[r] = std::min(lo[r], i);
+      hi[r] = std::max(hi[r], i);
+    }
+    std::vector<std::pair<int, int>> iv;
+    for (size_t r = 1; r < bodies.size(); ++r)
+      if (hi[r] >= 0) iv.emplace_back(lo[r], hi[r] + 1);
+    std::sort(iv.begin(), iv.end());
+    block_begin.clear();
+    dof_block.assign(nv, 0);
+    int cur_end = 0;
+    for (const auto& [b, e] : iv) {
+      if (block_begin.empty() || b >= cur_end) block_begin.push_back(b);
+      cur_end = std::max(cur_end, e);
+    }
+    block_begin.push_back(nv);
+    for (size_t k = 0; k + 1 < block_begin.size(); ++k)
+      for (int i = block_begin[k]; i < block_begin[k + 1]; ++i) dof_block[i] = static_cast<int>(k);
+  }
   finalized = true;
 }
 
@@ -122,6 +146,7 @@ Data make_data(const Model& m) {
   }
   d.max_rows = 3 * maxc + limit_rows;
   d.rows.reserve(d.max_rows);
+  d.row_order.assign(d.max_rows, 0);
   d.J_idx.assign(static_cast<size_t>(d.max_rows) * 2 * std::max(m.nv, 1), 0);
   d.J_val.assign(static_cast<size_t>(d.max_rows) * 2 * std::max(m.nv, 1), 0.0);
   d.MinvJT_T.assign(static_cast<size_t>(d.max_rows) * std::max(m.nv, 1), 0.0);

@@ -93,6 +93,11 @@ struct Model {
   std::vector<int> dof_body, dof_parent;
   std::vector<int> dof_anc_begin, dof_anc;  // CSR: ancestors of DoF i (nearest first), for solves
   std::vector<int> body_last_dof;  // per body: its last DoF, or its nearest ancestor's (-1 = none)
+  // Independent DoF blocks: M is block diagonal over them (one block per articulation, or the union of
+  // articulations whose DoF index ranges interleave). block_begin has nblocks + 1 entries (last = nv);
+  // dof_block[i] = block of DoF i. Every block is closed under dof_parent, so solves can be restricted
+  // to a block (or to any contiguous run of blocks). Constraint rows and the step work per block.
+  std::vector<int> block_begin, dof_block;
   bool finalized = false;
 
   Model();

@@ -51,6 +51,33 @@ inline int contact_row(const Model& m, Data& d, int ba, int bb, const Vec3& p, c
   return n;
 }
 
+// DoF range of a row touching bodies ba, bb: the span of their DoF blocks (empty for static bodies).
+inline void row_range(const Model& m, int ba, int bb, ConstraintRow& r) {
+  int jb = m.nv, je = 0;
+  for (const int b : {ba, bb}) {
+    const int k = m.body_last_dof[b];
+    if (k < 0) continue;
+    const int blk = m.dof_block[k];
+    jb = std::min(jb, m.block_begin[blk]);
+    je = std::max(je, m.block_begin[blk + 1]);
+  }
+  if (je <= jb) jb = je = 0;
+  r.j_begin = jb;
+  r.j_end = je;
+}
+
+// sum val[k] * W[idx[k] - off]: sparse J row times a W stored from DoF `off`
+inline double sparse_dot_off(const int* idx, const double* val, int n, const double* W, int off) {
+  double s0 = 0.0, s1 = 0.0;
+  int i = 0;
+  for (; i + 1 < n; i += 2) {
+    s0 += val[i] * W[idx[i] - off];
+    s1 += val[i + 1] * W[idx[i + 1] - off];
+  }
+  if (i < n) s0 += val[i] * W[idx[i] - off];
+  return s0 + s1;
+}
+
 inline double sparse_dot(const int* idx, const double* val, int n, const double* x) {
   double s0 = 0.0, s1 = 0.0;  // two chains: halves the FP-add latency (fixed order: deterministic)
   int i = 0;
@@ -62,9 +89,6 @@ inline double sparse_dot(const int* idx, const double* val, int n, const double*
   return s0 + s1;
 }
 
-inline double dot_dense(const int* idx, const double* val, int n, const double* x) {
-  return sparse_dot(idx, val, n, x);
-}
 inline void axpy_n(double s, const double* x, double* y, int n) {
   for (int i = 0; i < n; ++i) y[i] += s * x[i];
 }
@@ -74,6 +98,7 @@ inline void axpy_n(double s, const double* x, double* y, int n) {
 void begin_contacts(Data& d) {
   std::swap(d.contacts, d.prev_contacts);  // swaps buffers: capacities are kept, no allocation
   d.contacts.clear();
+  d.warm_cursor = 0;
 }
 
 bool add_contact(const Model& m, Data& d, const ContactPoint& cp) {
@@ -82,14 +107,18 @@ bool add_contact(const Model& m, Data& d, const ContactPoint& cp) {
   c.point = cp;
   c.body_a = m.geoms[cp.geom_a].body;
   c.body_b = m.geoms[cp.geom_b].body;
-  // warm start: match last step's contact by (geom_a, geom_b, feature). Both lists come in
-  // the same deterministic order; a linear scan is cheap at our contact counts.
+  // warm start: match last step's contact by (geom_a, geom_b, feature). Both lists come in the same
+  // deterministic (pair-sorted) order, so the scan resumes after the previous match and wraps around:
+  // O(1) per contact when the contact set is stable (a full scan from 0 was O(contacts^2) per step).
   const int np = static_cast<int>(d.prev_contacts.size());
-  for (int k = 0; k < np; ++k) {
+  for (int s = 0; s < np; ++s) {
+    int k = d.warm_cursor + s;
+    if (k >= np) k -= np;
     const Contact& pc = d.prev_contacts[k];
     if (pc.point.geom_a == cp.geom_a && pc.point.geom_b == cp.geom_b && pc.point.feature == cp.feature) {
       c.normal_impulse = pc.normal_impulse;
       c.friction_impulse = pc.friction_impulse;
+      d.warm_cursor = k + 1 < np ? k + 1 : 0;
       break;
     }
   }
@@ -174,6 +203,7 @@ void compute_constraints(const Model& m, Data& d) {
     rn.contact = ci;
     set_gap(rn, -c.point.depth, cs);
     rn.lambda = warm ? c.normal_impulse : 0.0;
+    row_range(m, c.body_a, c.body_b, rn);
     add_row(rn, contact_row(m, d, c.body_a, c.body_b, p, n, nz));
     const double mu = std::sqrt(m.geoms[c.point.geom_a].friction * m.geoms[c.point.geom_b].friction);
     const int first = static_cast<int>(d.rows.size());
@@ -183,6 +213,8 @@ void compute_constraints(const Model& m, Data& d) {
       rt.contact = ci;
       rt.partner = first;
       rt.mu = mu;
+      rt.j_begin = rn.j_begin;
+      rt.j_end = rn.j_end;
       const Vec3& t = k == 0 ? t1 : t2;
       rt.lambda = warm ? c.friction_impulse.dot(t) : 0.0;
       add_row(rt, contact_row(m, d, c.body_a, c.body_b, p, t, nz));
@@ -201,6 +233,7 @@ void compute_constraints(const Model& m, Data& d) {
       ConstraintRow r;
       r.kind = ConstraintRow::Limit;
       set_gap(r, C, ls);
+      row_range(m, static_cast<int>(i), 0, r);
       add_unit_row(r, b.v_index, use_lo ? 1.0 : -1.0);
     } else if (b.joint == JointType::Ball && (b.swing_limit > 0 || b.twist_limit > 0)) {
       const Quat qr = quat_from(d.q.data() + b.q_index).normalized();
@@ -217,6 +250,7 @@ void compute_constraints(const Model& m, Data& d) {
           ConstraintRow r;
           r.kind = ConstraintRow::Limit;
           set_gap(r, C, ls);
+          row_range(m, static_cast<int>(i), 0, r);
           const Vec3 jb = -(R.transpose() * (axis / s));
           for (int k = 0; k < 3; ++k) {
             d.J_idx[nz + k] = b.v_index + k;
@@ -235,6 +269,7 @@ void compute_constraints(const Model& m, Data& d) {
           ConstraintRow r;
           r.kind = ConstraintRow::Limit;
           set_gap(r, C, ls);
+          row_range(m, static_cast<int>(i), 0, r);
           add_unit_row(r, b.v_index + 2, tw >= 0 ? -1.0 : 1.0);
         }
       }
@@ -288,25 +323,52 @@ void solve_constraints(const Model& m, Data& d) {
   const int nr = static_cast<int>(d.rows.size());
   d.vtmp = d.v;  // velocity at the start of the step (for qacc)
   d.v = d.v_free;
-  // M^-1 J^T for all rows in one multi-RHS sparse solve (DoF-major scratch), then transposed so each
-  // row's W_r = M^-1 J_r^T is contiguous for the PGS updates; Delassus diagonal J_r W_r.
-  double* X = d.MinvJT_T.data();
-  std::fill(X, X + static_cast<size_t>(nv) * nr, 0.0);
-  for (int r = 0; r < nr; ++r) {
-    const ConstraintRow& row = d.rows[r];
-    for (int k = 0; k < row.nz_count; ++k)
-      X[static_cast<size_t>(d.J_idx[row.nz_begin + k]) * nr + r] += d.J_val[row.nz_begin + k];
-  }
-  solve_ltdl_multi(m, d.LD, X, nr, nr);
+  // Each row only reaches the DoFs of its block(s) [j_begin, j_end) (M is block diagonal over the
+  // articulations), so W_r = M^-1 J_r^T is stored packed over that range and every pass below costs
+  // O(range), not O(nv): N independent articulations cost N times one.
+  size_t off = 0;
   for (int r = 0; r < nr; ++r) {
     ConstraintRow& row = d.rows[r];
-    double* W = d.MinvJT.data() + static_cast<size_t>(r) * nv;
-    for (int i = 0; i < nv; ++i) W[i] = X[static_cast<size_t>(i) * nr + r];
-    const double a = sparse_dot(d.J_idx.data() + row.nz_begin, d.J_val.data() + row.nz_begin, row.nz_count, W);
-    // a (Delassus diagonal) ~ 0 means the DoFs can barely move along this row (contact normal through
-    // the joint axes): regularise (constraint force mixing, like MuJoCo's R) so the push-out impulse
-    // and the velocity it injects stay bounded.
-    row.inv_diag = a > 1e-12 ? 1.0 / (a + m.solver.regularization) : 0.0;
+    row.w_off = off;
+    off += static_cast<size_t>(row.j_end - row.j_begin);
+  }
+  // M^-1 J^T: rows grouped by range (sorted by (j_begin, j_end, index): deterministic), one multi-RHS
+  // block-restricted sparse solve per group (DoF-major scratch), then transposed so each row's W_r is
+  // contiguous for the PGS updates; Delassus diagonal J_r W_r.
+  int* order = d.row_order.data();
+  for (int r = 0; r < nr; ++r) order[r] = r;
+  std::sort(order, order + nr, [&](int x, int y) {
+    const ConstraintRow& rx = d.rows[x];
+    const ConstraintRow& ry = d.rows[y];
+    if (rx.j_begin != ry.j_begin) return rx.j_begin < ry.j_begin;
+    if (rx.j_end != ry.j_end) return rx.j_end < ry.j_end;
+    return x < y;
+  });
+  double* X = d.MinvJT_T.data();
+  for (int g0 = 0; g0 < nr;) {
+    const int jb = d.rows[order[g0]].j_begin, je = d.rows[order[g0]].j_end;
+    int g1 = g0 + 1;
+    while (g1 < nr && d.rows[order[g1]].j_begin == jb && d.rows[order[g1]].j_end == je) ++g1;
+    const int ng = g1 - g0, nb = je - jb;
+    std::fill(X, X + static_cast<size_t>(nb) * ng, 0.0);
+    for (int gi = 0; gi < ng; ++gi) {
+      const ConstraintRow& row = d.rows[order[g0 + gi]];
+      for (int k = 0; k < row.nz_count; ++k)
+        X[static_cast<size_t>(d.J_idx[row.nz_begin + k] - jb) * ng + gi] += d.J_val[row.nz_begin + k];
+    }
+    if (nb > 0) solve_ltdl_multi(m, d.LD, X, ng, ng, jb, je);
+    for (int gi = 0; gi < ng; ++gi) {
+      ConstraintRow& row = d.rows[order[g0 + gi]];
+      double* W = d.MinvJT.data() + row.w_off;
+      for (int i = 0; i < nb; ++i) W[i] = X[static_cast<size_t>(i) * ng + gi];
+      const double a =
+          sparse_dot_off(d.J_idx.data() + row.nz_begin, d.J_val.data() + row.nz_begin, row.nz_count, W, jb);
+      // a (Delassus diagonal) ~ 0 means the DoFs can barely move along this row (contact normal through
+      // the joint axes): regularise (constraint force mixing, like MuJoCo's R) so the push-out impulse
+      // and the velocity it injects stay bounded.
+      row.inv_diag = a > 1e-12 ? 1.0 / (a + m.solver.regularization) : 0.0;
+    }
+    g0 = g1;
   }
   // warm start (clamp old impulses into the current feasible set)
   for (int r = 0; r < nr; ++r) {
@@ -323,31 +385,37 @@ void solve_constraints(const Model& m, Data& d) {
       }
     }
   }
-  for (int r = 0; r < nr; ++r)
-    if (d.rows[r].lambda != 0.0)
-      axpy_n(d.rows[r].lambda, d.MinvJT.data() + static_cast<size_t>(r) * nv, d.v.data(), nv);
+  for (int r = 0; r < nr; ++r) {
+    const ConstraintRow& row = d.rows[r];
+    if (row.lambda != 0.0)
+      axpy_n(row.lambda, d.MinvJT.data() + row.w_off, d.v.data() + row.j_begin, row.j_end - row.j_begin);
+  }
   const bool cone = m.solver.friction == FrictionModel::Cone;
   double* v = d.v.data();
-  // Contact blocks (normal r, tangents r+1, r+2 share one sparse index pattern): one fused pass for the
-  // three J.v products, the normal update, the tangent updates corrected by the normal's effect
-  // (J_t . W_n, precomputed: exactly Gauss-Seidel order n -> t), and one fused pass updating v.
+  // Contact blocks (normal r, tangents r+1, r+2 share one sparse index pattern and range): one fused
+  // pass for the three J.v products, the normal update, the tangent updates corrected by the normal's
+  // effect (J_t . W_n, precomputed: exactly Gauss-Seidel order n -> t), and one fused pass updating v.
   for (int r = 0; r < nr; ++r) {
     ConstraintRow& row = d.rows[r];
-    if (row.kind == ConstraintRow::Friction)
-      row.coupling = dot_dense(d.J_idx.data() + row.nz_begin, d.J_val.data() + row.nz_begin, row.nz_count,
-                               d.MinvJT.data() + static_cast<size_t>(row.partner - 1) * nv);
+    if (row.kind == ConstraintRow::Friction) {
+      const ConstraintRow& rn = d.rows[row.partner - 1];
+      row.coupling = sparse_dot_off(d.J_idx.data() + row.nz_begin, d.J_val.data() + row.nz_begin,
+                                    row.nz_count, d.MinvJT.data() + rn.w_off, rn.j_begin);
+    }
   }
   for (int it = 0; it < m.solver.iterations; ++it) {
     for (int r = 0; r < nr; ++r) {
       ConstraintRow& row = d.rows[r];
       const int* ji = d.J_idx.data() + row.nz_begin;
       const double* jx = d.J_val.data() + row.nz_begin;
-      const double* W = d.MinvJT.data() + static_cast<size_t>(r) * nv;
+      const double* W = d.MinvJT.data() + row.w_off;
+      const int nb = row.j_end - row.j_begin;
+      double* vb = v + row.j_begin;
       if (row.kind == ConstraintRow::Limit) {
         const double jv = sparse_dot(ji, jx, row.nz_count, v);
         const double dl = -row.inv_diag * row.mass_scale * (jv + row.bias) - row.impulse_scale * row.lambda;
         const double nl = std::max(row.lambda + dl, 0.0);
-        axpy_n(nl - row.lambda, W, v, nv);
+        if (nl != row.lambda) axpy_n(nl - row.lambda, W, vb, nb);  // inactive speculative rows: no pass
         row.lambda = nl;
         continue;
       }
@@ -356,54 +424,57 @@ void solve_constraints(const Model& m, Data& d) {
       ConstraintRow& f2 = d.rows[r + 2];
       const double* jx1 = d.J_val.data() + f1.nz_begin;
       const double* jx2 = d.J_val.data() + f2.nz_begin;
-      double jn = 0.0, j1 = 0.0, j2 = 0.0, jnb = 0.0, j1b = 0.0, j2b = 0.0;  // 2 chains each
       const int cnt = row.nz_count;
-      int k = 0;
-      for (; k + 1 < cnt; k += 2) {
-        const double va = v[ji[k]], vb = v[ji[k + 1]];
-        jn += jx[k] * va;
-        j1 += jx1[k] * va;
-        j2 += jx2[k] * va;
-        jnb += jx[k + 1] * vb;
-        j1b += jx1[k + 1] * vb;
-        j2b += jx2[k + 1] * vb;
-      }
-      if (k < cnt) {
-        const double va = v[ji[k]];
-        jn += jx[k] * va;
-        j1 += jx1[k] * va;
-        j2 += jx2[k] * va;
-      }
-      jn += jnb;
-      j1 += j1b;
-      j2 += j2b;
+      const double jn = sparse_dot(ji, jx, cnt, v);
       const double dl = -row.inv_diag * row.mass_scale * (jn + row.bias) - row.impulse_scale * row.lambda;
       const double nl = std::max(row.lambda + dl, 0.0);
       const double dn = nl - row.lambda;
       row.lambda = nl;
-      j1 += f1.coupling * dn;
-      j2 += f2.coupling * dn;
-      const double bound = f1.mu * nl;
-      double l1 = f1.lambda - f1.inv_diag * j1;
-      double l2 = f2.lambda - f2.inv_diag * j2;
-      if (cone) {
-        const double n2 = l1 * l1 + l2 * l2;
-        if (n2 > bound * bound) {  // sticking contacts skip the sqrt
-          const double nrm = std::sqrt(n2);
-          const double sc = nrm > 0 ? bound / nrm : 0.0;
-          l1 *= sc;
-          l2 *= sc;
+      // nl == 0 (separated / speculative contact): the friction bound is 0, so both tangents are 0
+      // whatever J_t v is: skip their products.
+      double l1 = 0.0, l2 = 0.0;
+      if (nl > 0.0) {
+        double j1 = 0.0, j2 = 0.0, j1b = 0.0, j2b = 0.0;  // 2 chains each
+        int k = 0;
+        for (; k + 1 < cnt; k += 2) {
+          const double va = v[ji[k]], vb2 = v[ji[k + 1]];
+          j1 += jx1[k] * va;
+          j2 += jx2[k] * va;
+          j1b += jx1[k + 1] * vb2;
+          j2b += jx2[k + 1] * vb2;
         }
-      } else {
-        l1 = std::clamp(l1, -bound, bound);
-        l2 = std::clamp(l2, -bound, bound);
+        if (k < cnt) {
+          const double va = v[ji[k]];
+          j1 += jx1[k] * va;
+          j2 += jx2[k] * va;
+        }
+        j1 += j1b;
+        j2 += j2b;
+        j1 += f1.coupling * dn;
+        j2 += f2.coupling * dn;
+        const double bound = f1.mu * nl;
+        l1 = f1.lambda - f1.inv_diag * j1;
+        l2 = f2.lambda - f2.inv_diag * j2;
+        if (cone) {
+          const double n2 = l1 * l1 + l2 * l2;
+          if (n2 > bound * bound) {  // sticking contacts skip the sqrt
+            const double nrm = std::sqrt(n2);
+            const double sc = nrm > 0 ? bound / nrm : 0.0;
+            l1 *= sc;
+            l2 *= sc;
+          }
+        } else {
+          l1 = std::clamp(l1, -bound, bound);
+          l2 = std::clamp(l2, -bound, bound);
+        }
       }
       const double d1 = l1 - f1.lambda, d2 = l2 - f2.lambda;
       f1.lambda = l1;
       f2.lambda = l2;
-      const double* W1 = W + nv;
-      const double* W2 = W1 + nv;
-      for (int i = 0; i < nv; ++i) v[i] += dn * W[i] + d1 * W1[i] + d2 * W2[i];  // one pass over v
+      const double* W1 = W + nb;  // the contact's three rows are consecutive with equal ranges
+      const double* W2 = W1 + nb;
+      if (dn != 0.0 || d1 != 0.0 || d2 != 0.0)  // separated (speculative) contacts: no pass
+        for (int i = 0; i < nb; ++i) vb[i] += dn * W[i] + d1 * W1[i] + d2 * W2[i];  // one pass over v
       r += 2;
     }
   }

@@ -14,6 +14,9 @@
 //  * Constraints (contact normal + 2 friction rows, hinge / ball swing / ball twist limits) are solved
 //    by projected Gauss-Seidel on impulses, warm started from the previous step (contacts matched by
 //    (geom_a, geom_b, feature)). Each row keeps v consistent: v += (M^-1 J^T)_i dlambda_i.
+//    M is block diagonal over independent articulations (Model::block_begin): each row stores
+//    M^-1 J^T only over its DoF range [j_begin, j_end) and every solver pass is restricted to it, so
+//    N articulations in one Model cost N times one (and evolve exactly as each would alone).
 //  * Soft constraints use Box2D v3's soft step (Catto 2024, "Solver2D"): with omega = 2 pi hertz,
 //    zeta = damping ratio, h = dt:  a1 = 2 zeta + h omega, a2 = h omega a1, a3 = 1/(1 + a2),
 //    bias_rate = omega / a1, mass_scale = a2 a3, impulse_scale = a3, and
