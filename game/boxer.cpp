@@ -61,6 +61,35 @@ void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const en
   boxer_desired_pose(desc, arena, b, b.clip_time, b.desired);
   b.clip_time += dt;
   if (b.limp) return;
+  const bool parent_space = b.space == ServoSpace::Parent || b.space == ServoSpace::ParentMeathook;
+  if (!b.joints.empty() && !parent_space) {
+    // Implicit world-space servo rooted at the feet: aim the leg targets at the ankles where they actually are
+    // (closed-loop consistency, stance_ik.h); the legs then carry the pelvis to the clip's root.
+    const LegBones legs[2] = {{skel.find("thigh_l"), skel.find("shank_l"), skel.find("foot_l")},
+                              {skel.find("thigh_r"), skel.find("shank_r"), skel.find("foot_r")}};
+    // A leg is on the support path only while its foot touches something (contacts of the last step); a lifted
+    // leg is servoed from the pelvis like an arm and aims at the ground-fitted desired ankle.
+    bool loaded[2] = {d.time == 0.0, d.time == 0.0};  // placed on the crates: planted at the start
+    for (const auto& c : d.contacts) {
+      if (c.point.depth < -0.02) continue;  // speculative and more than 2 cm away (margin against flicker)
+      for (int k = 0; k < 2; ++k) {
+        const int fb = b.bodies.body[legs[k].foot];
+        if (c.body_a == fb || c.body_b == fb) loaded[k] = true;
+      }
+    }
+    std::vector<Eigen::Quaterniond>& Wtmp = b.W_d_metric;  // scratch
+    std::vector<Eigen::Vector3d> P;
+    pose_fk(skel, b.desired.pose, Wtmp, P);
+    Eigen::Vector3d ankles[2];
+    for (int k = 0; k < 2; ++k) {
+      ankles[k] = loaded[k] ? Eigen::Vector3d(d.x[b.bodies.body[legs[k].foot]].p) : P[legs[k].foot];
+      for (int bone : {legs[k].thigh, legs[k].shank, legs[k].foot}) {
+        b.joints[bone].support = loaded[k];
+        b.joints[bone].planted = loaded[k] && bone == legs[k].foot;
+      }
+    }
+    fit_legs_to_ankles(skel, legs, ankles, b.desired.pose);
+  }
 
   eng::control::ActualState actual;
   actual.W_a = &b.W_a;
@@ -76,6 +105,38 @@ void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const en
                                                                       : b.stance.heading;
   eng::control::control_step(skel, b.space, b.gains, b.control_body, b.hook, b.desired, heading, dt, actual, b.servo,
                              help);
+  const bool implicit = !b.joints.empty();
+  if (implicit) {
+    // Parent space: the same implicit springs with every joint referenced to the DESIRED parent (planted mode:
+    // the classic joint-space PD), the meathook (if any) from control_step; W_d / omega_d lifted as in world space.
+    if (parent_space)
+      eng::control::inertial_servo_step(skel, ServoSpace::World, b.gains, b.control_body.I_eff, b.desired, heading,
+                                        dt, b.W_a, b.omega_a, b.servo);
+    // Eq. 3 as implicit joint springs: the references go to the engine, no explicit torques (tau[0] = 0 too:
+    // no root help).
+    b.q_joint.resize(n);
+    for (int i = 0; i < n; ++i) {
+      const auto& body = m.bodies[b.bodies.body[i]];
+      b.q_joint[i].setZero();
+      if (i == 0) continue;
+      if (body.joint == eng::physics::JointType::Ball) {
+        const double* q = d.q.data() + body.q_index;
+        b.q_joint[i] = eng::control::quaternion_log_vector(Eigen::Quaterniond(q[0], q[1], q[2], q[3]).normalized());
+      } else if (body.joint == eng::physics::JointType::Hinge) {
+        b.q_joint[i].x() = d.q[body.q_index];
+      }
+    }
+    eng::control::implicit_servo_refs(skel, b.joints, b.servo.W_d, b.servo.omega_d, b.W_a, b.omega_a, b.q_joint,
+                                      m.dt, b.spring_ref);
+    for (int i = 1; i < n; ++i) {
+      const auto& body = m.bodies[b.bodies.body[i]];
+      for (int k = 0; k < body.nv; ++k) d.spring_ref[body.v_index + k] = b.spring_ref[i][k];
+    }
+    for (auto& t : b.servo.tau) t.setZero();
+    eng::physics::apply_world_torque(d, pelvis, help.torque);
+    if (help.force.squaredNorm() > 0) eng::physics::apply_force_at_point(m, d, pelvis, help.force, d.x[pelvis].p);
+    return;
+  }
   for (int i = 1; i < n; ++i) eng::physics::apply_world_torque_with_reaction(m, d, b.bodies.body[i], b.servo.tau[i]);
   eng::physics::apply_world_torque(d, pelvis, b.servo.tau[0] + help.torque);
   if (help.force.squaredNorm() > 0) eng::physics::apply_force_at_point(m, d, pelvis, help.force, d.x[pelvis].p);

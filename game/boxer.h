@@ -8,6 +8,7 @@
 #include "engine/anim/clip.h"
 #include "engine/assets/character.h"
 #include "engine/control/controller.h"
+#include "engine/control/implicit_servo.h"
 #include "engine/control/inertial_servo.h"
 #include "engine/physics/data.h"
 #include "engine/physics/model.h"
@@ -41,6 +42,11 @@ struct Boxer {
   eng::control::ControlBody control_body;
   eng::control::MeathookParams hook;
   eng::control::ServoState servo;
+  // World / Person space: eq. 3 as implicit joint springs rooted at the feet (implicit_servo.h). Per skeleton
+  // bone: the joint's servo (gains also written into the Model's Body::stiffness/damping at build time), the
+  // actual joint rotation and the spring reference written to Data::spring_ref every tick.
+  std::vector<eng::control::ImplicitServoJoint> joints;
+  std::vector<Eigen::Vector3d> q_joint, spring_ref;
   bool limp = false;  // a ragdoll: no servo at all
 
   const eng::anim::Clip* clip = nullptr;  // keyframed pose source

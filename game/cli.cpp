@@ -71,6 +71,8 @@ flags:
   --push-force N         push scenario: force in newtons
   --push-duration S      push scenario: duration (default 0.1)
   --push-at S            push scenario: start time (default 2)
+  --servo-wn W           servo natural frequency omega_n, rad/s (default 15)
+  --servo-zeta Z         servo damping ratio (default 1)
 graph flags:
   --report FILE.json     graph figures
   --dot FILE.dot         the graph for Graphviz
@@ -177,6 +179,13 @@ eng::Result<Options> parse_cli(const std::vector<std::string>& args) {
       else if (flag == "--push-force") o.push_force = x;
       else if (flag == "--push-duration") o.push_duration = x;
       else o.push_at = x;
+    } else if (flag == "--servo-wn" || flag == "--servo-zeta") {
+      auto v = value();
+      if (!v) return missing();
+      double x;
+      if (!parse_double(*v, 0.0, 1e4, x)) return bad(flag + " must be a non-negative number, got '" + *v + "'");
+      if (flag == "--servo-wn") o.servo_omega_n = x;
+      else o.servo_zeta = x;
     } else if (flag == "--overlay" || flag == "--no-overlay") {
       o.overlay = flag == "--overlay";
       o.overlay_given = true;

@@ -22,18 +22,11 @@ void pose_fk(const eng::anim::Skeleton& skel, const eng::anim::Pose& pose, std::
   }
 }
 
-void fit_legs_to_ground(const eng::anim::Skeleton& skel, const LegBones legs[2], double base_top,
-                        const std::function<double(double, double)>& ground, eng::anim::Pose& pose) {
-  std::vector<Eigen::Quaterniond> W;
-  std::vector<Eigen::Vector3d> P;
-  pose_fk(skel, pose, W, P);
-  for (int k = 0; k < 2; ++k) {
-    const LegBones& L = legs[k];
+namespace {
+
+void solve_leg(const eng::anim::Skeleton& skel, const LegBones& L, const std::vector<Eigen::Quaterniond>& W,
+               const std::vector<Eigen::Vector3d>& P, const Eigen::Vector3d& ankle, eng::anim::Pose& pose) {
     const Eigen::Vector3d hip = P[L.thigh];
-    Eigen::Vector3d ankle = P[L.foot];
-    // The foot's sole is flat under the ankle: sample the ground at the middle of the foot.
-    const Eigen::Vector3d mid = ankle + W[L.foot] * Eigen::Vector3d(0.05, 0.0, 0.0);
-    ankle.z() += ground(mid.x(), mid.y()) - base_top;
 
     const Eigen::Vector3d thigh_off = skel.offset[L.shank], shank_off = skel.offset[L.foot];
     const double l1 = thigh_off.norm(), l2 = shank_off.norm();
@@ -52,7 +45,31 @@ void fit_legs_to_ground(const eng::anim::Skeleton& skel, const LegBones legs[2],
     pose.rotation[L.thigh] = (W[pelvis].conjugate() * thigh_w).normalized();
     pose.rotation[L.shank] = knee;
     pose.rotation[L.foot] = (shank_w.conjugate() * W[L.foot]).normalized();
+}
+
+}  // namespace
+
+void fit_legs_to_ground(const eng::anim::Skeleton& skel, const LegBones legs[2], double base_top,
+                        const std::function<double(double, double)>& ground, eng::anim::Pose& pose) {
+  std::vector<Eigen::Quaterniond> W;
+  std::vector<Eigen::Vector3d> P;
+  pose_fk(skel, pose, W, P);
+  for (int k = 0; k < 2; ++k) {
+    const LegBones& L = legs[k];
+    Eigen::Vector3d ankle = P[L.foot];
+    // The foot's sole is flat under the ankle: sample the ground at the middle of the foot.
+    const Eigen::Vector3d mid = ankle + W[L.foot] * Eigen::Vector3d(0.05, 0.0, 0.0);
+    ankle.z() += ground(mid.x(), mid.y()) - base_top;
+    solve_leg(skel, L, W, P, ankle, pose);
   }
+}
+
+void fit_legs_to_ankles(const eng::anim::Skeleton& skel, const LegBones legs[2], const Eigen::Vector3d ankles[2],
+                        eng::anim::Pose& pose) {
+  std::vector<Eigen::Quaterniond> W;
+  std::vector<Eigen::Vector3d> P;
+  pose_fk(skel, pose, W, P);
+  for (int k = 0; k < 2; ++k) solve_leg(skel, legs[k], W, P, ankles[k], pose);
 }
 
 }  // namespace boxing

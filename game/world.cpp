@@ -1,10 +1,12 @@
 #include "game/world.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
 
 #include "engine/control/composite_inertia.h"
+#include "engine/control/implicit_servo.h"
 #include "engine/physics/dynamics.h"
 #include "engine/physics/step.h"
 #include "game/rng.h"
@@ -25,6 +27,10 @@ std::string content_dir(const Options& o) {
 namespace {
 
 constexpr uint32_t kStaticGroup = 1u;
+// Servo torque limit per joint (N m): roughly human peak hip / knee / ankle strength; 0 = none.
+// Tried 400 (hip / knee) and 80 (ankle): no better in the stand scenario, so off for now (see report).
+constexpr double kServoTorqueLimit = 0.0;
+constexpr double kAnkleTorqueLimit = 0.0;
 
 void add_static_arena(World& w) {
   Geom floor;
@@ -61,6 +67,53 @@ eng::control::ControlBody control_body_of(const eng::assets::CharacterDesc& desc
   return cb;
 }
 
+// World / Person space: eq. 3 as implicit joint springs rooted at the planted feet (implicit_servo.h).
+// Gain rule (one omega_n, zeta for the body): K_i = I_i omega_n^2, D_i = 2 zeta I_i omega_n, with I_i the inertia
+// joint i has to move (servo_inertias): the bone's subtree for free bones, the load side (rest of the body about
+// the joint, shared by the two legs) for thigh / shank / foot. Torque limits from human strength (N m).
+void setup_implicit_servo(World& w, Boxer& b) {
+  const auto& desc = w.boxer_desc;
+  const auto& skel = desc.skeleton;
+  const int n = skel.size();
+  std::vector<double> mass;
+  std::vector<Eigen::Vector3d> com;
+  std::vector<Eigen::Matrix3d> inertia;
+  for (const auto& bone : desc.bones) {
+    mass.push_back(bone.mass);
+    com.push_back(bone.com);
+    inertia.push_back(bone.inertia_diag.asDiagonal());
+  }
+  const std::vector<int> feet = {skel.find("foot_l"), skel.find("foot_r")};
+  const std::vector<bool> support = eng::control::support_path(skel, feet);
+  const bool parent_space =
+      b.space == eng::control::ServoSpace::Parent || b.space == eng::control::ServoSpace::ParentMeathook;
+  const std::vector<double> I = eng::control::servo_inertias(
+      skel, mass, com, inertia, parent_space ? std::vector<bool>(n, false) : support, 2);
+  b.joints.assign(n, {});
+  for (int i = 1; i < n; ++i) {
+    eng::physics::Body& body = w.model.bodies[b.bodies.body[i]];
+    eng::control::ImplicitServoJoint& j = b.joints[i];
+    j.kind = body.joint == eng::physics::JointType::Ball    ? eng::control::JointKind::Ball
+             : body.joint == eng::physics::JointType::Hinge ? eng::control::JointKind::Hinge
+                                                            : eng::control::JointKind::None;
+    if (j.kind == eng::control::JointKind::None) continue;
+    j.axis = body.axis;
+    // Parent spaces: every joint referenced to its desired parent (planted mode = joint-space PD), gains from
+    // the subtree rule as before.
+    const bool parent_space = b.space == eng::control::ServoSpace::Parent ||
+                              b.space == eng::control::ServoSpace::ParentMeathook;
+    j.support = parent_space || support[i];
+    j.planted = parent_space || (support[i] && std::find(feet.begin(), feet.end(), i) != feet.end());
+    j.K = eng::control::servo_k1(b.gains, I[i]);
+    j.D = eng::control::servo_k2(b.gains, I[i]);
+    j.limit = j.planted ? kAnkleTorqueLimit : kServoTorqueLimit;
+    body.stiffness = j.K;
+    body.damping += j.D;  // on top of the content's passive joint damping
+  }
+  b.q_joint.assign(n, Eigen::Vector3d::Zero());
+  b.spring_ref.assign(n, Eigen::Vector3d::Zero());
+}
+
 void add_boxer(World& w, int index, const Eigen::Vector3f& color, bool limp, const Stance& stance) {
   Boxer b;
   b.index = index;
@@ -70,12 +123,13 @@ void add_boxer(World& w, int index, const Eigen::Vector3f& color, bool limp, con
   const uint32_t group = 2u << index;
   b.bodies = add_character(w.model, w.boxer_desc, "b" + std::to_string(index) + "_", group, 0xffffffffu, false);
   b.space = servo_space_from_name(w.options.servo);
-  b.gains.omega_n = 14.0;
-  b.gains.zeta = 1.0;
+  b.gains.omega_n = w.options.servo_omega_n;
+  b.gains.zeta = w.options.servo_zeta;
   b.gains.stable_pd = true;
   b.gains.dt = kPhysicsDt;
   b.control_body = control_body_of(w.boxer_desc);
   b.servo.resize(w.boxer_desc.skeleton.size());
+  if (!limp) setup_implicit_servo(w, b);
   const int guard = eng::anim::find_clip(w.clips, "guard");
   b.clip = &w.clips[guard >= 0 ? guard : 0];
   w.boxers.push_back(std::move(b));
@@ -169,6 +223,8 @@ void step_world(World& w) {
   using clock = std::chrono::steady_clock;
   const auto t0 = clock::now();
   eng::physics::clear_applied(w.data);
+  // step() leaves d.x at the START of the last step: bring the kinematics to the current q for the servos.
+  eng::physics::forward_kinematics(w.model, w.data);
   for (Boxer& b : w.boxers) boxer_control(w.model, w.data, w.boxer_desc, w.arena, b, kPhysicsDt);
 
   // Push scenario: a horizontal force at boxer 0's chest, direction in its heading frame (0 = where it faces).

@@ -64,7 +64,7 @@ def limb(length, r, inset=0.01):
 # is what keeps the boxer in realistic poses.
 BALL = {
     "abdomen": (0.5, 0.4), "chest": (0.4, 0.4), "head": (0.7, 1.0),
-    "upper_arm": (2.6, 1.4), "thigh": (1.9, 0.8), "foot": (0.6, 0.3),
+    "upper_arm": (2.6, 1.4), "thigh": (1.9, 0.8), "foot": (0.9, 0.3),
 }
 
 # name, parent, offset (joint in parent frame), segment key, joint, shapes
