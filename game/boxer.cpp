@@ -29,9 +29,8 @@ const char* servo_space_name(ServoSpace s) {
   return "?";
 }
 
-void boxer_desired_pose(const eng::assets::CharacterDesc& desc, const Arena& arena, const Boxer& b, double t,
+void place_desired_pose(const eng::assets::CharacterDesc& desc, const Arena& arena, const Boxer& b,
                         eng::anim::PoseSample& out) {
-  out = eng::anim::sample_clip(*b.clip, t);
   // Place the clip (authored facing +X on a flat floor at z = 0) on the stance: rotate by the heading, lift onto
   // the lower of the two crates under the feet; the legs are then fitted to the actual crate heights.
   const Eigen::Quaterniond yaw(Eigen::AngleAxisd(b.stance.heading, Eigen::Vector3d::UnitZ()));
@@ -58,8 +57,8 @@ void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const en
     b.W_a[i] = Eigen::Quaterniond(d.x[body].R).normalized();
     b.omega_a[i] = d.v_body[body].head<3>();
   }
-  boxer_desired_pose(desc, arena, b, b.clip_time, b.desired);
-  b.clip_time += dt;
+  b.desired = b.source.tick(dt);
+  place_desired_pose(desc, arena, b, b.desired);
   if (b.limp) return;
   const bool parent_space = b.space == ServoSpace::Parent || b.space == ServoSpace::ParentMeathook;
   if (!b.joints.empty() && !parent_space) {

@@ -14,6 +14,7 @@
 #include "engine/physics/model.h"
 #include "game/arena.h"
 #include "game/character_builder.h"
+#include "game/pose_source.h"
 #include "game/stance_ik.h"
 
 namespace boxing {
@@ -49,8 +50,7 @@ struct Boxer {
   std::vector<Eigen::Vector3d> q_joint, spring_ref;
   bool limp = false;  // a ragdoll: no servo at all
 
-  const eng::anim::Clip* clip = nullptr;  // keyframed pose source
-  double clip_time = 0.0;
+  PoseSource source;                      // looping clip or motion-graph walk
   eng::anim::PoseSample desired;          // world-placed desired pose (after fitting the legs to the crates)
   std::vector<Eigen::Quaterniond> W_a, W_d_metric;
   std::vector<Eigen::Vector3d> omega_a;
@@ -60,9 +60,10 @@ struct Boxer {
 eng::control::ServoSpace servo_space_from_name(const std::string& name);
 const char* servo_space_name(eng::control::ServoSpace s);
 
-// The desired pose of the clip at `t`, placed on the boxer's stance (heading, crate heights).
-void boxer_desired_pose(const eng::assets::CharacterDesc& desc, const Arena& arena, const Boxer& b, double t,
-                        eng::anim::PoseSample& out);
+// Places a desired pose from the pose source (clip floor frame, facing +X) on the boxer's stance (heading, crate
+// heights), in place.
+void place_desired_pose(const eng::assets::CharacterDesc& desc, const Arena& arena, const Boxer& b,
+                        eng::anim::PoseSample& pose);
 
 // Reads the boxer's actual world orientations / angular velocities, runs its servo and applies the torques
 // (+tau on each bone, -tau on its parent; root help on the pelvis without reaction).

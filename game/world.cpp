@@ -130,13 +130,19 @@ void add_boxer(World& w, int index, const Eigen::Vector3f& color, bool limp, con
   b.control_body = control_body_of(w.boxer_desc);
   b.servo.resize(w.boxer_desc.skeleton.size());
   if (!limp) setup_implicit_servo(w, b);
-  const int guard = eng::anim::find_clip(w.clips, "guard");
-  b.clip = &w.clips[guard >= 0 ? guard : 0];
+  if (w.options.scenario == "graph-walk" || w.options.scenario == "match") {
+    // The paper's boxers: a seeded random walk of the motion graph (each boxer its own stream).
+    b.source = PoseSource::graph_walk(w.graph, w.options.seed * 2654435761ull + uint64_t(index));
+  } else {
+    const int guard = eng::anim::find_clip(w.clips, "guard");
+    b.source = PoseSource::looping_clip(w.clips[guard >= 0 ? guard : 0]);
+  }
   w.boxers.push_back(std::move(b));
 }
 
 void place_boxer(World& w, Boxer& b) {
-  boxer_desired_pose(w.boxer_desc, w.arena, b, 0.0, b.desired);
+  b.desired = b.source.tick(0.0);
+  place_desired_pose(w.boxer_desc, w.arena, b, b.desired);
   set_character_pose(w.model, w.data, b.bodies, w.boxer_desc, b.desired.pose.root_position, b.desired.pose.rotation);
 }
 
@@ -188,15 +194,19 @@ eng::Result<std::unique_ptr<World>> make_world(const Options& o) {
       w->loose.push_back(LooseBody{id, g.shape, Eigen::Vector3f(0.5f, 0.33f, 0.17f)});
     }
   } else {
+    if (o.scenario == "graph-walk" || o.scenario == "match")
+      w->graph.build(w->clips, eng::anim::GraphOptions{}, w->boxer_desc.skeleton);
     add_boxer(*w, 0, Eigen::Vector3f(0.75f, 0.08f, 0.06f), false, w->arena.stances[0]);
-    add_boxer(*w, 1, Eigen::Vector3f(0.06f, 0.18f, 0.75f), false, w->arena.stances[1]);
+    // graph-walk: one boxer tracking the walk alone (issue: the servo against a 10-minute random walk).
+    if (o.scenario != "graph-walk") add_boxer(*w, 1, Eigen::Vector3f(0.06f, 0.18f, 0.75f), false, w->arena.stances[1]);
   }
   w->model.finalize();
   w->data = eng::physics::make_data(w->model);
 
   if (o.scenario == "ragdolls") {
     for (Boxer& b : w->boxers) {
-      boxer_desired_pose(w->boxer_desc, w->arena, b, 0.0, b.desired);
+      b.desired = b.source.tick(0.0);
+      place_desired_pose(w->boxer_desc, w->arena, b, b.desired);
       // Tumble: tilt the whole body by a random rotation before dropping it.
       const Eigen::Quaterniond tilt(Eigen::AngleAxisd(rng.uniform(0.3, 1.4),
                                                       Eigen::Vector3d(rng.uniform(-1, 1), rng.uniform(-1, 1), 0.2)
@@ -267,6 +277,7 @@ nlohmann::json world_report(const World& w) {
                       {"rms_tracking_error_rad", err},
                       {"rms_tracking_error_all_bones_rad",
                        m.samples > 0 ? std::sqrt(total / w.boxer_desc.skeleton.size()) : 0.0},
+                      {"clips_visited_s", b.source.clip_time()},
                       {"stance_lead_top_m", b.stance.lead_top},
                       {"stance_rear_top_m", b.stance.rear_top}});
   }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "engine/anim/clip.h"
+#include "engine/anim/motion_graph.h"
 #include "engine/assets/character.h"
 #include "engine/assets/gltf.h"
 #include "engine/core/result.h"
@@ -33,6 +34,7 @@ struct World {
   eng::assets::GltfScene boxer_scene;
   eng::assets::CharacterDesc boxer_desc;
   std::vector<eng::anim::Clip> clips;
+  eng::anim::MotionGraph graph;         // built for the graph-walk and match scenarios
   eng::physics::Model model;
   eng::physics::Data data;
   std::vector<Boxer> boxers;            // servo-driven (or limp ragdolls in the ragdolls scenario)
