@@ -230,3 +230,21 @@ TEST(Contact, StackOfThreeCratesStaysPut) {
   EXPECT_LT(vmax, 1e-3);
   EXPECT_NEAR(d.q[14 + 2], 1.0, 0.01);  // top box centre
 }
+
+// Speculative contacts: a sphere moving 3.3 cm per step (below the 4 cm margin) stops on the floor instead of
+// passing through it, and does not bounce (no restitution).
+TEST(Contact, FastSphereDoesNotTunnelThroughTheFloorAndDoesNotBounce) {
+  Model m;
+  m.add_geom(plane());
+  const int b = add_free_sphere(m, {0, 0, 0.5}, 0.05, 1.0);
+  m.finalize();
+  Data d = make_data(m);
+  d.v[m.bodies[b].v_index + 2] = -8.0;
+  double zmin = 1;
+  while (d.time < 1.0) {
+    step(m, d);
+    zmin = std::min(zmin, d.q[m.bodies[b].q_index + 2]);
+  }
+  EXPECT_GT(zmin, 0.05 - 0.01);
+  EXPECT_LT(std::abs(d.v[m.bodies[b].v_index + 2]), 1e-2);
+}
