@@ -1,5 +1,6 @@
 #include "game/boxer.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "engine/control/orientation_error.h"
@@ -11,6 +12,23 @@
 namespace boxing {
 
 using eng::control::ServoSpace;
+
+namespace {
+// Balance layer gains (boxer_control): desired-root shift per metre of com error (-) and per m/s of com speed (s).
+// Measured (world, seeds 1-5 stand + seed 3 pushes): 0 / 0 -> 5/10 stand, 270 and 315 pushes fall; 1.0 / 0.3 ->
+// 315 falls; 2.0 / 0.5 -> 10/10, all 8 pushes; 3.0 / 0.7 -> no better for person 315.
+constexpr double kBalanceKp = 2.0;
+constexpr double kBalanceKd = 0.5;
+constexpr double kBalanceMaxShift = 0.15;  // m
+// CoP ankle limit |tau| <= kAnkleLever * Fn: tried 0.10 m -> all 10 boxers fell (2.6-18 s), all pushes fell: off.
+constexpr double kAnkleLever = 0.0;      // m, see boxer_control (0 = no CoP limit)
+constexpr double kAnkleMinTorque = 10.0;  // N m
+constexpr double kPersonHeadingTau = 1.0;  // s, see boxer_control
+constexpr double kClipForward = 0.05;  // m, see place_desired_pose
+constexpr double kRearRise = 0.75;  // see place_desired_pose
+constexpr double kMaxRise = 0.09;  // m
+const Eigen::Vector3d kFootCentre(0.05, 0.0, 0.0);  // middle of the sole in the foot frame (content: foot box)
+}  // namespace
 
 ServoSpace servo_space_from_name(const std::string& name) {
   if (name == "person") return ServoSpace::Person;
@@ -32,11 +50,20 @@ const char* servo_space_name(ServoSpace s) {
 void place_desired_pose(const eng::assets::CharacterDesc& desc, const Arena& arena, const Boxer& b,
                         eng::anim::PoseSample& out) {
   // Place the clip (authored facing +X on a flat floor at z = 0) on the stance: rotate by the heading, lift onto
-  // the lower of the two crates under the feet; the legs are then fitted to the actual crate heights.
+  // the lower of the two crates under the feet, plus kRearRise of the step (at most kMaxRise) when the REAR crate
+  // is the higher one; the legs are then fitted to the actual crate heights. Why: at the old base (the lower crate)
+  // every boxer with the rear crate higher (12-17 cm) fell at 1.4-2.2 s, rear heel lifting and the rear sole rolling
+  // onto its outer edge (trace in the report), every lead-higher boxer stood. Measured rise: 0.5 x step -> the
+  // 12 cm steps fall, 0.75 x step -> the 16 cm steps fall (lead leg over-extended); 0.75 x step capped at 9 cm ->
+  // all stand. Lead-higher: any rise makes them fall (0.25 x step: s5 at 5.5 s; 0.5: three of five).
+  const double base = std::min(b.stance.lead_top, b.stance.rear_top) + std::min(kMaxRise, kRearRise * std::max(0.0, b.stance.rear_top - b.stance.lead_top));
   const Eigen::Quaterniond yaw(Eigen::AngleAxisd(b.stance.heading, Eigen::Vector3d::UnitZ()));
-  const double base = std::min(b.stance.lead_top, b.stance.rear_top);
+  // The guard clip's feet are not centred on the stance point (ankles at +0.17 / -0.24 m): placed as authored the
+  // lead heel hangs ~1 cm over the seam onto the rear foot's crate, and when that crate is the higher one the heel
+  // sits against its side (every seed that fell at HEAD had the rear crate higher). kClipForward moves the clip
+  // along the heading so both soles lie inside their own crates (lead heel ~4 cm clear of the seam).
   out.pose.root_position = Eigen::Vector3d(b.stance.position.x(), b.stance.position.y(), base) +
-                           yaw * out.pose.root_position;
+                           yaw * (out.pose.root_position + Eigen::Vector3d(kClipForward, 0.0, 0.0));
   out.pose.rotation[0] = yaw * out.pose.rotation[0];
   out.root_velocity = yaw * out.root_velocity;
   out.angular_velocity[0] = yaw * out.angular_velocity[0];
@@ -69,13 +96,23 @@ void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const en
     // A leg is on the support path only while its foot touches something (contacts of the last step); a lifted
     // leg is servoed from the pelvis like an arm and aims at the ground-fitted desired ankle.
     bool loaded[2] = {d.time == 0.0, d.time == 0.0};  // placed on the crates: planted at the start
+    double fn[2] = {0.0, 0.0};  // normal (z) force on each foot from the last solve (N)
     for (const auto& c : d.contacts) {
       if (c.point.depth < -0.02) continue;  // speculative and more than 2 cm away (margin against flicker)
       for (int k = 0; k < 2; ++k) {
         const int fb = b.bodies.body[legs[k].foot];
         if (c.body_a == fb || c.body_b == fb) loaded[k] = true;
+        if (c.body_b == fb) fn[k] += c.force.z();
+        if (c.body_a == fb) fn[k] -= c.force.z();
       }
     }
+    // Ankle torque within what the sole can take: |tau| <= Fn * lever (centre of pressure inside the foot), so the
+    // ankle gives way instead of tipping the foot over its heel / edge. Before the first solve: the static share.
+    if (kAnkleLever > 0.0)
+      for (int k = 0; k < 2; ++k) {
+        const double f = d.time == 0.0 ? 0.5 * desc.total_mass() * 9.81 : std::max(0.0, fn[k]);
+        b.joints[legs[k].foot].limit = std::max(kAnkleMinTorque, kAnkleLever * f);
+      }
     std::vector<Eigen::Quaterniond>& Wtmp = b.W_d_metric;  // scratch
     std::vector<Eigen::Vector3d> P;
     pose_fk(skel, b.desired.pose, Wtmp, P);
@@ -86,6 +123,40 @@ void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const en
         b.joints[bone].support = loaded[k];
         b.joints[bone].planted = loaded[k] && bone == legs[k].foot;
       }
+    }
+    // BALANCE LAYER (on top of eq. 3; Kudoh's "PD near the centre"): keep the centre of mass over the support.
+    // The desired com offset from the support centre is the clip's own (desired pose, desired feet); the error of
+    // the actual com against it, and the com velocity, shift the desired root horizontally the other way
+    //   root_d += -(kp e + kd v)   (clamped), e = (com_a - centre_a) - (com_d - centre_d)
+    // The legs are re-fitted below from the shifted root to the actual ankles, so the support servo (ankles,
+    // knees, hips) pushes the body back over the feet. Only while a foot is planted.
+    if (loaded[0] || loaded[1]) {
+      const double M = desc.total_mass();
+      Eigen::Vector3d com_a = Eigen::Vector3d::Zero(), vcom = Eigen::Vector3d::Zero(), com_d = Eigen::Vector3d::Zero();
+      for (int i = 0; i < n; ++i) {
+        const int body = b.bodies.body[i];
+        const double mi = desc.bones[i].mass;
+        const Eigen::Vector3d c = d.com_world[body];
+        com_a += mi * c;
+        vcom += mi * (d.v_body[body].tail<3>() + d.v_body[body].head<3>().cross(c));
+        com_d += mi * (P[i] + Wtmp[i] * desc.bones[i].com);
+      }
+      com_a /= M, vcom /= M, com_d /= M;
+      Eigen::Vector3d centre_a = Eigen::Vector3d::Zero(), centre_d = Eigen::Vector3d::Zero();
+      int nl = 0;
+      for (int k = 0; k < 2; ++k) {
+        if (!loaded[k]) continue;
+        const int fb = b.bodies.body[legs[k].foot];
+        centre_a += d.x[fb].p + d.x[fb].R * kFootCentre;
+        centre_d += P[legs[k].foot] + Wtmp[legs[k].foot] * kFootCentre;
+        ++nl;
+      }
+      centre_a /= nl, centre_d /= nl;
+      Eigen::Vector3d e = (com_a - centre_a) - (com_d - centre_d);
+      e.z() = 0, vcom.z() = 0;
+      Eigen::Vector3d shift = -(kBalanceKp * e + kBalanceKd * vcom);
+      if (shift.norm() > kBalanceMaxShift) shift *= kBalanceMaxShift / shift.norm();
+      b.desired.pose.root_position += shift;
     }
     fit_legs_to_ankles(skel, legs, ankles, b.desired.pose);
   }
@@ -100,8 +171,18 @@ void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const en
   // Look ahead one servo tick (the paper's delta) for omega_d.
   // Person (egocentric) space leaves the root's heading free: the desired root takes the pelvis's actual heading
   // (the game steers by changing the clip's placement); world space keeps the placed clip's heading.
-  const double heading = b.space == eng::control::ServoSpace::Person ? eng::control::heading_of(b.W_a[0])
-                                                                      : b.stance.heading;
+  // Person space: the heading is the pelvis's, LOW-PASSED (time constant kPersonHeadingTau): a push's sudden
+  // twist of the pelvis otherwise turns the whole desired pose with it, the planted ankles twist the feet after it
+  // and the feet spin on the crates (no torsional friction; seed 3, 315 deg push: feet yawed 40 deg in 0.6 s).
+  // Slow turns are still followed. (Tried: heading from the planted feet -> every boxer fell at 1.3-2.6 s, the
+  // feet's desired yaw then follows their own yaw.)
+  double heading = b.stance.heading;
+  if (b.space == eng::control::ServoSpace::Person) {
+    const double h = eng::control::heading_of(b.W_a[0]);
+    if (!b.have_person_heading) b.person_heading = h, b.have_person_heading = true;
+    b.person_heading += (1.0 - std::exp(-dt / kPersonHeadingTau)) * std::remainder(h - b.person_heading, 2.0 * M_PI);
+    heading = b.person_heading;
+  }
   eng::control::control_step(skel, b.space, b.gains, b.control_body, b.hook, b.desired, heading, dt, actual, b.servo,
                              help);
   const bool implicit = !b.joints.empty();
@@ -179,6 +260,51 @@ void boxer_measure(const eng::physics::Model& m, const eng::physics::Data& d, co
     }
   }
   mt.ground_contact_time = touching ? mt.ground_contact_time + dt : 0.0;
+
+  {  // diagnostic trace
+    const int feet[2] = {skel.find("foot_l"), skel.find("foot_r")};
+    if (mt.samples == 1)
+      for (int k = 0; k < 2; ++k) mt.foot0[k] = d.x[b.bodies.body[feet[k]]].p;
+    const long every = std::lround(0.05 / dt);
+    const bool fall_now = mt.fell && !mt.traced_fall;
+    if ((d.time < 4.0 && mt.samples % every == 0) || fall_now) {
+      if (fall_now) mt.traced_fall = true;
+      std::vector<Eigen::Quaterniond> Wd;
+      std::vector<Eigen::Vector3d> Pd;
+      pose_fk(skel, b.desired.pose, Wd, Pd);
+      std::array<double, 12> r{};
+      r[0] = d.time;
+      Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+      double fz = 0;
+      Eigen::Vector3d cop = Eigen::Vector3d::Zero();
+      for (int k = 0; k < 2; ++k) {
+        const int fb = b.bodies.body[feet[k]];
+        const Eigen::Matrix3d R = d.x[fb].R;
+        const Eigen::Vector3d fa = R.col(0), fd = Wd[feet[k]] * Eigen::Vector3d::UnitX();
+        r[1 + k] = std::remainder(std::atan2(fa.y(), fa.x()) - std::atan2(fd.y(), fd.x()), 2 * M_PI) * 180 / M_PI;
+        r[3 + k] = std::acos(std::clamp((R * Eigen::Vector3d::UnitZ()).z(), -1.0, 1.0)) * 180 / M_PI;
+        // rear (right) foot: sole normal's lean forward / left (heading frame, deg) in the slip columns
+        const Eigen::Vector2d up = Eigen::Rotation2Dd(-b.stance.heading) * (R * Eigen::Vector3d::UnitZ()).head<2>();
+        if (k == 1) r[5] = std::asin(std::clamp(up.x(), -1.0, 1.0)) * 180 / M_PI, r[6] = std::asin(std::clamp(up.y(), -1.0, 1.0)) * 180 / M_PI;
+        centre += 0.5 * (d.x[fb].p + R * Eigen::Vector3d(0.05, 0, 0));
+        for (const auto& c : d.contacts) {
+          const double f = c.body_b == fb ? c.force.z() : (c.body_a == fb ? -c.force.z() : 0.0);
+          if (f == 0.0) continue;
+          cop += f * c.point.position;
+          fz += f;
+        }
+      }
+      const Eigen::Rotation2Dd toh(-b.stance.heading);
+      const Eigen::Vector2d ce = toh * (com - centre).head<2>();
+      r[7] = ce.x(), r[8] = ce.y();
+      if (fz > 1e-6) {
+        const Eigen::Vector2d cp = toh * (cop / fz - centre).head<2>();
+        r[9] = cp.x(), r[10] = cp.y();
+      }
+      r[11] = d.x[pelvis].p.z() - support;
+      mt.trace.push_back(r);
+    }
+  }
   if (!mt.fell) {
     if (d.x[pelvis].p.z() - support < 0.5 * mt.standing_height) {
       mt.fell = true;

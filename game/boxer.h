@@ -1,4 +1,5 @@
 #pragma once
+#include <array>
 // A boxer: its bodies in the physics model, its pose source (a keyframed clip, later the motion graph), the servo
 // that turns the desired pose into torques, and the measurements the scenarios report.
 #include <Eigen/Geometry>
@@ -31,6 +32,14 @@ struct BoxerMetrics {
   double ground_contact_time = 0.0;  // continuous time a non-foot, non-shank link touches crates / floor
   Eigen::Vector3d last_com = Eigen::Vector3d::Zero();
   bool have_com = false;
+  // Diagnostic trace, in the report as boxers[i].trace (first 4 s at 20 Hz, plus the sample at the fall). Columns:
+  // t, foot yaw error l/r (deg, actual - desired heading), foot tilt l/r (deg), the right (rear) sole normal's lean
+  // forward / left (deg, heading frame), com - support centre (x, y; heading frame, m; centre = mid of the two
+  // sole centres), centre of pressure of the feet's contact forces - support centre (x, y; 0 = no foot force),
+  // pelvis height above the lower crate (m).
+  std::vector<std::array<double, 12>> trace;
+  Eigen::Vector3d foot0[2];
+  bool traced_fall = false;
 };
 
 struct Boxer {
@@ -49,6 +58,8 @@ struct Boxer {
   std::vector<eng::control::ImplicitServoJoint> joints;
   std::vector<Eigen::Vector3d> q_joint, spring_ref;
   bool limp = false;  // a ragdoll: no servo at all
+  double person_heading = 0.0;  // person space: low-passed pelvis heading (boxer_control)
+  bool have_person_heading = false;
 
   PoseSource source;                      // looping clip or motion-graph walk
   eng::anim::PoseSample desired;          // world-placed desired pose (after fitting the legs to the crates)

@@ -31,6 +31,9 @@ constexpr uint32_t kStaticGroup = 1u;
 // Tried 400 (hip / knee) and 80 (ankle): no better in the stand scenario, so off for now (see report).
 constexpr double kServoTorqueLimit = 0.0;
 constexpr double kAnkleTorqueLimit = 0.0;
+// Planted ankle's twist spring relative to eq. 3's (ImplicitServoJoint::twist_scale). Measured, stand 60 s seeds
+// 1-5: 0.3 -> world 9/10, person 7/10 (slow yaw creep, falls at ~56 s); 0.6 -> world 10/10; 0.8 -> no better.
+constexpr double kPlantedTwistScale = 0.6;
 
 void add_static_arena(World& w) {
   Geom floor;
@@ -104,6 +107,8 @@ void setup_implicit_servo(World& w, Boxer& b) {
                               b.space == eng::control::ServoSpace::ParentMeathook;
     j.support = parent_space || support[i];
     j.planted = parent_space || (support[i] && std::find(feet.begin(), feet.end(), i) != feet.end());
+    j.free_roll = !parent_space && support[i] && skel.parent[i] == 0;  // support hips (thighs)
+    j.twist_scale = parent_space ? 1.0 : kPlantedTwistScale;
     j.K = eng::control::servo_k1(b.gains, I[i]);
     j.D = eng::control::servo_k2(b.gains, I[i]);
     j.limit = j.planted ? kAnkleTorqueLimit : kServoTorqueLimit;
@@ -279,7 +284,10 @@ nlohmann::json world_report(const World& w) {
                        m.samples > 0 ? std::sqrt(total / w.boxer_desc.skeleton.size()) : 0.0},
                       {"clips_visited_s", b.source.clip_time()},
                       {"stance_lead_top_m", b.stance.lead_top},
-                      {"stance_rear_top_m", b.stance.rear_top}});
+                      {"stance_rear_top_m", b.stance.rear_top},
+                      {"trace", m.trace},
+                      {"feet_start", {std::vector<double>(m.foot0[0].data(), m.foot0[0].data() + 3),
+                                      std::vector<double>(m.foot0[1].data(), m.foot0[1].data() + 3)}}});
   }
   nlohmann::json r = {{"scenario", w.options.scenario},
                       {"physics_steps", w.steps},

@@ -89,8 +89,11 @@ void implicit_servo_refs(const anim::Skeleton& skel, const std::vector<ImplicitS
         // leg's swivel has no other actuator than the planted foot's torsional grip.
         const Eigen::Quaterniond qn =
             (W_a[p].conjugate() * W_d[i]) * rotation_from_vector(lead * v_ref);
-        e.z() = quaternion_log_vector(qa.conjugate() * qn.normalized()).z();
+        const Eigen::Vector3d e_free = quaternion_log_vector(qa.conjugate() * qn.normalized());
+        e.z() = e_free.z();
+        if (j.free_roll) e.x() = e_free.x();
       }
+      if (j.planted) e.z() *= j.twist_scale;  // weaker twist spring on a planted foot (no torsional friction)
       if (j.limit > 0.0 && j.K * e.norm() > j.limit) e *= j.limit / (j.K * e.norm());
       qr = qa * rotation_from_vector(e);
       ref[i] = quaternion_log_vector(qr);

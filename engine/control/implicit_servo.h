@@ -30,6 +30,15 @@
 // then holds the shank upright in world space against the whole body's weight: balance with no root help.
 // A support hip's twist about the thigh axis (the leg's swivel) keeps the free-bone law (thigh from the actual
 // pelvis): otherwise only the planted foot's torsional grip resists it and the feet spin on the crates.
+// LATERAL BALANCE. With every support joint controlling the bone above it, a sideways sway of both legs with the
+// pelvis kept level (the parallelogram ground - leg - pelvis - leg) changes no servoed world orientation except the
+// shanks', so only the ankles' roll resists it, and a 10 cm wide sole takes ~Fn x 5 cm before it rolls onto its
+// edge. A support hip's ROLL (ab/adduction, bone x axis) therefore also keeps the free-bone law (free_roll): the
+// hips then hold the legs' sideways lean against the pelvis (hip strategy: load moves between the legs). Measured
+// (stand, 60 s, seeds 1-5, with the game's balance layer): without it world 8/10, person 5/10 stand; with it 10/10.
+// PLANTED TWIST. The contacts have no torsional friction: a full-strength twist on a planted foot spins it on its
+// crate. The planted ankle's twist (foot z) error is scaled by twist_scale (game: 0.6; 0.3 lets the body creep
+// round on its feet and fall after ~40-60 s; 1.0 was the old value).
 // The game switches a leg to the support law only while its foot touches the ground (boxer.cpp) and aims the
 // leg targets at the actual ankles (stance_ik.h fit_legs_to_ankles) so the two legs agree through the loop.
 #include <Eigen/Core>
@@ -52,6 +61,13 @@ struct ImplicitServoJoint {
   // orientation the ankle torque would not drop when the foot starts to tip, and it tips over its edge. With the
   // desired one the ankle torque falls as the foot tilts (the centre of pressure limit comes for free).
   bool planted = false;
+  // Support hip only: its ROLL (rotation about the bone's x axis, forward: ab/adduction) also keeps the free-bone
+  // law (thigh toward its own W_d from the actual pelvis). See LATERAL BALANCE above.
+  bool free_roll = false;
+  // Planted foot only: the spring's twist (about the foot's z axis, vertical while the sole is flat) is scaled by
+  // this (1 = the plain eq. 3 spring). The contacts have no torsional friction, so a stiff twist reaction spins the
+  // foot on its crate.
+  double twist_scale = 1.0;
   double K = 0.0;        // joint stiffness  (N m/rad) = I omega_n^2
   double D = 0.0;        // joint damping    (N m s/rad) = 2 zeta I omega_n
   double limit = 0.0;    // |K (q_ref - q)| <= limit (N m); 0 = none

@@ -95,3 +95,27 @@ TEST(ImplicitServo, TorqueLimitClampsTheSpring) {
   implicit_servo_refs(skel, j, W_d, zero, W_a, zero, zero, 1.0 / 240.0, ref);
   EXPECT_NEAR(j[1].K * ref[1].x(), 50.0, 1e-9);
 }
+
+TEST(ImplicitServo, PlantedTwistScaleWeakensOnlyTheFootTwist) {
+  const auto skel = chain2();
+  std::vector<ImplicitServoJoint> j(2);
+  j[1].kind = JointKind::Ball;
+  j[1].K = 100.0;
+  j[1].support = true;
+  j[1].planted = true;
+  // Foot (child) actually yawed 0.2 rad and pitched 0.1 rad against its desired (identity); shank as desired.
+  const Quaterniond foot = aa(0.2, Vector3d::UnitZ()) * aa(0.1, Vector3d::UnitY());
+  const std::vector<Quaterniond> W_a = {Quaterniond::Identity(), foot};
+  const std::vector<Quaterniond> W_d = {Quaterniond::Identity(), Quaterniond::Identity()};
+  const std::vector<Vector3d> zero(2, Vector3d::Zero());
+  const std::vector<Vector3d> q_a = {Vector3d::Zero(), quaternion_log_vector(foot)};
+  std::vector<Vector3d> full, weak;
+  implicit_servo_refs(skel, j, W_d, zero, W_a, zero, q_a, 1.0 / 240.0, full);
+  j[1].twist_scale = 0.25;
+  implicit_servo_refs(skel, j, W_d, zero, W_a, zero, q_a, 1.0 / 240.0, weak);
+  const Vector3d tf = W_a[1].conjugate() * implicit_servo_spring_torque(j[1], W_a[1], full[1], q_a[1]);
+  const Vector3d tw = W_a[1].conjugate() * implicit_servo_spring_torque(j[1], W_a[1], weak[1], q_a[1]);
+  EXPECT_GT(std::abs(tf.z()), 1.0);
+  EXPECT_NEAR(tw.z(), 0.25 * tf.z(), 0.05 * std::abs(tf.z()));  // twist (foot frame z) scaled
+  EXPECT_NEAR(tw.y(), tf.y(), 0.05 * std::abs(tf.y()) + 1e-9);  // tilt untouched
+}
