@@ -1,5 +1,7 @@
 #include "game/pose_source.h"
 
+#include <cmath>
+
 namespace boxing {
 
 PoseSource PoseSource::looping_clip(const eng::anim::Clip& clip) {
@@ -28,11 +30,13 @@ eng::anim::PoseSample PoseSource::tick(double dt) {
   eng::anim::PoseSample s = walker_->tick(dt);
   // The crates are a small stage: a walk that has wandered off its spot steps back toward it (the way a player
   // or an AI keeps a boxer in range), using the graph's own footwork clips.
+  // Only the drift along the facing direction can be undone by stepping forward or back.
   const Eigen::Vector2d drift = s.pose.root_position.head<2>();
-  if (!walker_->has_plan() && drift.norm() > leash_) {
-    const Eigen::Vector3d fwd = s.pose.rotation[0] * Eigen::Vector3d::UnitX();
-    walker_->request_clip(fwd.head<2>().dot(drift) > 0 ? "step_back" : "step_forward");
-  }
+  const Eigen::Vector3d fwd3 = s.pose.rotation[0] * Eigen::Vector3d::UnitX();
+  const Eigen::Vector2d fwd = fwd3.head<2>().normalized();
+  const double along = fwd.dot(drift);
+  if (!walker_->has_plan() && std::abs(along) > leash_)
+    walker_->request_clip(along > 0 ? "step_back" : "step_forward");
   return s;
 }
 
