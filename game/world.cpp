@@ -54,18 +54,28 @@ void add_static_arena(World& w) {
   }
 }
 
-// Per-bone scalar inertia that scales the servo gains (composite inertia of the bone's subtree about its joint).
-eng::control::ControlBody control_body_of(const eng::assets::CharacterDesc& desc) {
+// The bones' mass properties as the control module takes them (bone frame, inertia about the com).
+struct BoneMass {
   std::vector<double> mass;
   std::vector<Eigen::Vector3d> com;
   std::vector<Eigen::Matrix3d> inertia;
+};
+
+BoneMass bone_mass_of(const eng::assets::CharacterDesc& desc) {
+  BoneMass bm;
   for (const auto& b : desc.bones) {
-    mass.push_back(b.mass);
-    com.push_back(b.com);
-    inertia.push_back(b.inertia_diag.asDiagonal());
+    bm.mass.push_back(b.mass);
+    bm.com.push_back(b.com);
+    bm.inertia.push_back(b.inertia_diag.asDiagonal());
   }
+  return bm;
+}
+
+// Per-bone scalar inertia that scales the servo gains (composite inertia of the bone's subtree about its joint).
+eng::control::ControlBody control_body_of(const eng::assets::CharacterDesc& desc) {
+  const BoneMass bm = bone_mass_of(desc);
   eng::control::ControlBody cb;
-  cb.I_eff = eng::control::composite_inertias(desc.skeleton, mass, com, inertia);
+  cb.I_eff = eng::control::composite_inertias(desc.skeleton, bm.mass, bm.com, bm.inertia);
   cb.total_mass = desc.total_mass();
   return cb;
 }
@@ -78,14 +88,10 @@ void setup_implicit_servo(World& w, Boxer& b) {
   const auto& desc = w.boxer_desc;
   const auto& skel = desc.skeleton;
   const int n = skel.size();
-  std::vector<double> mass;
-  std::vector<Eigen::Vector3d> com;
-  std::vector<Eigen::Matrix3d> inertia;
-  for (const auto& bone : desc.bones) {
-    mass.push_back(bone.mass);
-    com.push_back(bone.com);
-    inertia.push_back(bone.inertia_diag.asDiagonal());
-  }
+  const BoneMass bm = bone_mass_of(desc);
+  const std::vector<double>& mass = bm.mass;
+  const std::vector<Eigen::Vector3d>& com = bm.com;
+  const std::vector<Eigen::Matrix3d>& inertia = bm.inertia;
   const std::vector<int> feet = {skel.find("foot_l"), skel.find("foot_r")};
   const std::vector<bool> support = eng::control::support_path(skel, feet);
   const bool parent_space =

@@ -6,17 +6,12 @@
 #include <limits>
 
 #include "engine/control/orientation_error.h"
+#include "engine/control/wrench.h"
 
 namespace eng::control {
 
 namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-Eigen::Vector3d clamp_norm(const Eigen::Vector3d& v, double limit) {
-  const double n = v.norm();
-  if (n > limit && n > 0.0) return v * (limit / n);
-  return v;
-}
 }  // namespace
 
 std::vector<double> servo_torque_limits(const ServoGains& g, const std::vector<double>& I_eff,

@@ -4,16 +4,12 @@
 #include <cassert>
 #include <limits>
 
+#include "engine/control/inertial_servo.h"
 #include "engine/control/orientation_error.h"
+#include "engine/control/wrench.h"
 
 namespace eng::control {
 
-namespace {
-Eigen::Vector3d clamp_norm(const Eigen::Vector3d& v, double limit) {
-  const double n = v.norm();
-  return (n > limit && n > 0.0) ? Eigen::Vector3d(v * (limit / n)) : v;
-}
-}  // namespace
 
 void parent_space_torques(const anim::Skeleton& skel, const ServoGains& g, const std::vector<double>& I_eff,
                           const anim::PoseSample& desired, const std::vector<Eigen::Quaterniond>& W_a,
@@ -34,16 +30,9 @@ void parent_space_torques(const anim::Skeleton& skel, const ServoGains& g, const
     const Eigen::Vector3d w_d = have_rates ? desired.angular_velocity[i] : Eigen::Vector3d::Zero();
     const Eigen::Quaterniond& q_d = desired.pose.rotation[i];
     const double I = I_eff[i];
-    const double k1 = servo_k1(g, I), k2 = servo_k2(g, I);
-    Eigen::Vector3d tau_p;
-    if (g.stable_pd && g.dt > 0.0) {
-      // Stable PD: spring on the relative rotations predicted one step ahead, implicit damper.
-      const Eigen::Quaterniond q_d1 = integrate_rotation(q_d, w_d, g.dt);
-      const Eigen::Quaterniond q_a1 = integrate_rotation(q_a, w_a, g.dt);
-      tau_p = (k1 * orientation_error(q_d1, q_a1) + k2 * (w_d - w_a)) / (1.0 + 2.0 * g.zeta * g.omega_n * g.dt);
-    } else {
-      tau_p = k1 * orientation_error(q_d, q_a) + k2 * (w_d - w_a);  // eq. 1, 3-DOF form, parent frame
-    }
+    // The same PD law as the world-space servo (stable-PD option included), on parent-frame quantities.
+    const Eigen::Vector3d tau_p =
+        servo_torque_one(g, I, q_d, w_d, q_a, w_a, std::numeric_limits<double>::infinity());
     double limit = std::numeric_limits<double>::infinity();
     if (tau_limit && static_cast<int>(tau_limit->size()) > i)
       limit = (*tau_limit)[i];

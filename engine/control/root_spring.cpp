@@ -4,16 +4,11 @@
 #include <algorithm>
 
 #include "engine/control/orientation_error.h"
+#include "engine/control/wrench.h"
 #include "engine/control/person_space.h"
 
 namespace eng::control {
 
-namespace {
-Eigen::Vector3d clamp_norm(const Eigen::Vector3d& v, double limit) {
-  const double n = v.norm();
-  return (n > limit && n > 0.0) ? Eigen::Vector3d(v * (limit / n)) : v;
-}
-}  // namespace
 
 Eigen::Quaterniond upright_target(const Eigen::Quaterniond& pelvis_world) {
   return yaw_rotation(heading_of(pelvis_world));

@@ -10,4 +10,10 @@ struct Wrench {
   Eigen::Vector3d torque = Eigen::Vector3d::Zero();  // N m
 };
 
+// v scaled down to length `limit` when longer (torque and force limits keep the direction).
+inline Eigen::Vector3d clamp_norm(const Eigen::Vector3d& v, double limit) {
+  const double n = v.norm();
+  return (n > limit && n > 0.0) ? Eigen::Vector3d(v * (limit / n)) : v;
+}
+
 }  // namespace eng::control
