@@ -185,6 +185,20 @@ void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const en
   }
   eng::control::control_step(skel, b.space, b.gains, b.control_body, b.hook, b.desired, heading, dt, actual, b.servo,
                              help);
+  // Root spring (paper section V): a torque-limited spring on the pelvis TILT toward the desired root's tilt, the
+  // heading left free (no yaw torque), so it helps dynamic balance without steering. External: no reaction.
+  b.root_spring.update(b.root_params, dt);
+  {
+    const Eigen::Quaterniond& Wd0 = b.desired.pose.rotation[0];
+    const double h_a = eng::control::heading_of(b.W_a[0]), h_d = eng::control::heading_of(Wd0);
+    const Eigen::Quaterniond target = eng::control::yaw_rotation(h_a - h_d) * Wd0;
+    Eigen::Vector3d w = b.omega_a[0];
+    w.z() = 0.0;  // damp tilt rates only
+    b.root_torque = b.root_spring.compute(b.root_params, b.control_body.I_eff[0], b.control_body.total_mass,
+                                          target.normalized(), b.W_a[0], w).torque;
+    b.root_torque.z() = 0.0;
+    help.torque += b.root_torque;
+  }
   const bool implicit = !b.joints.empty();
   if (implicit) {
     // Parent space: the same implicit springs with every joint referenced to the DESIRED parent (planted mode:
@@ -241,6 +255,12 @@ void boxer_measure(const eng::physics::Model& m, const eng::physics::Data& d, co
   }
   ++mt.samples;
 
+  if (!mt.fell) {
+    const double t = b.root_torque.norm();
+    mt.root_torque_sq_dt += t * t * dt;
+    mt.root_torque_peak = std::max(mt.root_torque_peak, t);
+    if (b.root_params.enabled && t >= 0.999 * b.root_params.max_torque) mt.root_saturated_time += dt;
+  }
   const Eigen::Vector3d com = eng::physics::subtree_com(m, d, pelvis);
   if (mt.have_com) mt.max_com_speed = std::max(mt.max_com_speed, (com - mt.last_com).norm() / dt);
   mt.last_com = com;

@@ -11,6 +11,7 @@
 #include "engine/control/controller.h"
 #include "engine/control/implicit_servo.h"
 #include "engine/control/inertial_servo.h"
+#include "engine/control/root_spring.h"
 #include "engine/physics/data.h"
 #include "engine/physics/model.h"
 #include "game/arena.h"
@@ -26,6 +27,8 @@ struct BoxerMetrics {
   std::string fell_reason;
   double time_upright = 0.0;
   double max_com_speed = 0.0;
+  // Root spring use (external torque on the pelvis, no reaction): sum of |tau|^2 dt, peak |tau|, time at its limit.
+  double root_torque_sq_dt = 0.0, root_torque_peak = 0.0, root_saturated_time = 0.0;
   double standing_height = 0.0;  // pelvis above its support at the start
   std::vector<double> err_sq_sum;  // per bone, world orientation tracking error^2 (rad^2)
   long samples = 0;
@@ -52,6 +55,9 @@ struct Boxer {
   eng::control::ControlBody control_body;
   eng::control::MeathookParams hook;
   eng::control::ServoState servo;
+  eng::control::RootSpringParams root_params;  // enabled per scenario (world.cpp), off = no root help
+  eng::control::RootSpring root_spring;
+  Eigen::Vector3d root_torque = Eigen::Vector3d::Zero();  // applied this tick (for the metrics)
   // World / Person space: eq. 3 as implicit joint springs rooted at the feet (implicit_servo.h). Per skeleton
   // bone: the joint's servo (gains also written into the Model's Body::stiffness/damping at build time), the
   // actual joint rotation and the spring reference written to Data::spring_ref every tick.
@@ -60,6 +66,8 @@ struct Boxer {
   bool limp = false;  // a ragdoll: no servo at all
   double person_heading = 0.0;  // person space: low-passed pelvis heading (boxer_control)
   bool have_person_heading = false;
+  double plant_yaw[2] = {0, 0};
+  bool plant_yaw_set[2] = {false, false};
 
   PoseSource source;                      // looping clip or motion-graph walk
   eng::anim::PoseSample desired;          // world-placed desired pose (after fitting the legs to the crates)

@@ -73,6 +73,8 @@ flags:
   --push-at S            push scenario: start time (default 2)
   --servo-wn W           servo natural frequency omega_n, rad/s (default 15)
   --servo-zeta Z         servo damping ratio (default 1)
+  --root-spring on|off   the paper's torque-limited root spring on the pelvis tilt (default off)
+  --root-spring-max NM   its torque limit in N m (default 120)
 graph flags:
   --report FILE.json     graph figures
   --dot FILE.dot         the graph for Graphviz
@@ -186,6 +188,17 @@ eng::Result<Options> parse_cli(const std::vector<std::string>& args) {
       if (!parse_double(*v, 0.0, 1e4, x)) return bad(flag + " must be a non-negative number, got '" + *v + "'");
       if (flag == "--servo-wn") o.servo_omega_n = x;
       else o.servo_zeta = x;
+    } else if (flag == "--root-spring") {
+      auto v = value();
+      if (!v) return missing();
+      if (*v != "on" && *v != "off") return bad("--root-spring must be on or off, got '" + *v + "'");
+      o.root_spring = *v;
+    } else if (flag == "--root-spring-max") {
+      auto v = value();
+      if (!v) return missing();
+      double x;
+      if (!parse_double(*v, 0.0, 1e4, x)) return bad("--root-spring-max must be a non-negative number (N m), got '" + *v + "'");
+      o.root_spring_max = x;
     } else if (flag == "--overlay" || flag == "--no-overlay") {
       o.overlay = flag == "--overlay";
       o.overlay_given = true;

@@ -40,6 +40,10 @@ struct Options {
   // servo gains: ONE pair for the whole body (per joint K = I omega_n^2, D = 2 zeta I omega_n; world.cpp)
   double servo_omega_n = 15.0;         // rad/s
   double servo_zeta = 1.0;
+  // Root spring (paper section V: torque-limited, "for some dynamic balance situations"); off by default: the
+  // boxers stand with no root help at all.
+  std::string root_spring = "off";     // on | off
+  double root_spring_max = 120.0;      // N m, its torque limit
   // graph tool
   std::string graph_report;
   std::string graph_dot;

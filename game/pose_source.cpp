@@ -22,6 +22,8 @@ const std::string& PoseSource::current_clip() const {
 
 eng::anim::PoseSample PoseSource::tick(double dt) {
   clip_time_[current_clip()] += dt;
+  if (timeline_.empty() || timeline_.back().second != current_clip()) timeline_.emplace_back(now_, current_clip());
+  now_ += dt;
   if (!walker_) {
     eng::anim::PoseSample s = eng::anim::sample_clip(*clip_, t_);
     t_ += dt;

@@ -5,6 +5,8 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "engine/anim/clip.h"
 #include "engine/anim/motion_graph.h"
@@ -24,12 +26,16 @@ class PoseSource {
   eng::anim::GraphWalker* walker() { return walker_.get(); }
   // Seconds spent per clip so far.
   const std::map<std::string, double>& clip_time() const { return clip_time_; }
+  // Every clip change: (time it started, clip), in order; the report's clip timeline.
+  const std::vector<std::pair<double, std::string>>& timeline() const { return timeline_; }
 
  private:
   const eng::anim::Clip* clip_ = nullptr;
   double t_ = 0.0;
   std::unique_ptr<eng::anim::GraphWalker> walker_;
   std::map<std::string, double> clip_time_;
+  std::vector<std::pair<double, std::string>> timeline_;
+  double now_ = 0.0;
   double leash_ = 0.25;
 };
 

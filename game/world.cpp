@@ -141,6 +141,8 @@ void add_boxer(World& w, int index, const Eigen::Vector3f& color, bool limp, con
   b.control_body = control_body_of(w.boxer_desc);
   b.servo.resize(w.boxer_desc.skeleton.size());
   if (!limp) setup_implicit_servo(w, b);
+  b.root_params.enabled = !limp && w.options.root_spring == "on";
+  b.root_params.max_torque = w.options.root_spring_max;
   if (w.options.scenario == "graph-walk" || w.options.scenario == "match") {
     // The paper's boxers: a seeded random walk of the motion graph (each boxer its own stream).
     b.source = PoseSource::graph_walk(w.graph, w.options.seed * 2654435761ull + uint64_t(index));
@@ -285,10 +287,17 @@ nlohmann::json world_report(const World& w) {
                       {"fell_reason", m.fell_reason},
                       {"time_upright_s", m.time_upright},
                       {"max_com_speed", m.max_com_speed},
+                      {"root_spring",
+                       {{"enabled", b.root_params.enabled},
+                        {"max_torque_nm", b.root_params.max_torque},
+                        {"rms_torque_nm", m.time_upright > 0 ? std::sqrt(m.root_torque_sq_dt / m.time_upright) : 0.0},
+                        {"peak_torque_nm", m.root_torque_peak},
+                        {"saturated_fraction", m.time_upright > 0 ? m.root_saturated_time / m.time_upright : 0.0}}},
                       {"rms_tracking_error_rad", err},
                       {"rms_tracking_error_all_bones_rad",
                        m.samples > 0 ? std::sqrt(total / w.boxer_desc.skeleton.size()) : 0.0},
                       {"clips_visited_s", b.source.clip_time()},
+                      {"clip_timeline", b.source.timeline()},
                       {"stance_lead_top_m", b.stance.lead_top},
                       {"stance_rear_top_m", b.stance.rear_top},
                       {"trace", m.trace},

@@ -14,13 +14,15 @@ TEST(Cli, DefaultsAreTheDocumentedOnes) {
   EXPECT_EQ(o->scenario, "arena");
   EXPECT_FALSE(o->headless);
   EXPECT_TRUE(o->validation);
+  EXPECT_EQ(o->root_spring, "off");  // no root help unless asked for
 }
 
 TEST(Cli, ParsesEveryValueFlag) {
   auto o = parse_cli({"--headless", "--width", "640", "--height=360", "--seconds", "2.5", "--seed", "42",
                       "--scenario", "push", "--screenshot", "a.png", "--report", "r.json", "--servo",
                       "parent-meathook", "--push-dir", "90", "--push-force", "150", "--push-duration", "0.1",
-                      "--push-at", "3", "--camera", "closeup", "--ghost", "--render-every", "30"});
+                      "--push-at", "3", "--camera", "closeup", "--ghost", "--render-every", "30", "--root-spring",
+                      "on", "--root-spring-max", "80"});
   ASSERT_TRUE(o.ok()) << o.error();
   EXPECT_TRUE(o->headless);
   EXPECT_EQ(o->width, 640);
@@ -37,6 +39,8 @@ TEST(Cli, ParsesEveryValueFlag) {
   EXPECT_EQ(o->camera, "closeup");
   EXPECT_TRUE(o->ghost);
   EXPECT_EQ(o->render_every, 30);
+  EXPECT_EQ(o->root_spring, "on");
+  EXPECT_DOUBLE_EQ(o->root_spring_max, 80.0);
 }
 
 TEST(Cli, GraphSubcommandTakesReportAndDot) {
@@ -67,6 +71,8 @@ TEST(Cli, RejectsBadFlagsAndValuesWithOneLine) {
       {{"--screenshot", "a.jpg"}, ".png"},
       {{"--headless=yes"}, "--headless"},
       {{"--dot", "g.dot"}, "--dot"},
+      {{"--root-spring", "maybe"}, "--root-spring"},
+      {{"--root-spring-max", "-5"}, "--root-spring-max"},
   };
   for (const BadCase& c : cases) {
     auto o = parse_cli(c.args);
