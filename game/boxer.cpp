@@ -27,7 +27,10 @@ constexpr double kPersonHeadingTau = 1.0;  // s, see boxer_control
 constexpr double kClipForward = 0.05;  // m, see place_desired_pose
 constexpr double kRearRise = 0.75;  // see place_desired_pose
 constexpr double kMaxRise = 0.09;  // m
-const Eigen::Vector3d kFootCentre(0.05, 0.0, 0.0);  // middle of the sole in the foot frame (content: foot box)
+const Eigen::Vector3d kFootCentre(0.05, 0.0, 0.0);
+constexpr double kSwingLift = 0.015;  // m, see boxer_control
+// Ends of the sole in the foot frame (content: the foot box, half extents 0.13 x 0.05 x 0.04 at (0.05, 0, -0.04)).
+const Eigen::Vector3d kSoleHeel(-0.08, 0.0, -0.08), kSoleToe(0.18, 0.0, -0.08);  // middle of the sole in the foot frame (content: foot box)
 }  // namespace
 
 ServoSpace servo_space_from_name(const std::string& name) {
@@ -64,6 +67,7 @@ void place_desired_pose(const eng::assets::CharacterDesc& desc, const Arena& are
   // along the heading so both soles lie inside their own crates (lead heel ~4 cm clear of the seam).
   out.pose.root_position = Eigen::Vector3d(b.stance.position.x(), b.stance.position.y(), base) +
                            yaw * (out.pose.root_position + Eigen::Vector3d(kClipForward, 0.0, 0.0));
+  out.pose.root_position.head<2>() += b.anchor;
   out.pose.rotation[0] = yaw * out.pose.rotation[0];
   out.root_velocity = yaw * out.root_velocity;
   out.angular_velocity[0] = yaw * out.angular_velocity[0];
@@ -84,7 +88,21 @@ void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const en
     b.W_a[i] = Eigen::Quaterniond(d.x[body].R).normalized();
     b.omega_a[i] = d.v_body[body].head<3>();
   }
-  b.desired = b.source.tick(dt);
+  b.desired = b.source.tick(dt, Eigen::Rotation2Dd(-b.stance.heading) * b.anchor);
+  {
+    // Swing feet: the clip (authored on a flat floor at z = 0) has the sole's lowest end more than kSwingLift above
+    // its floor. Judged on the clip itself, not after fitting to the crates, where a leg too short for a low crate
+    // leaves a planted foot hanging. A raised heel (the cross's pivot) keeps the toe down: not a swing.
+    std::vector<Eigen::Quaterniond> W0;
+    std::vector<Eigen::Vector3d> P0;
+    pose_fk(desc.skeleton, b.desired.pose, W0, P0);
+    const int feet[2] = {desc.skeleton.find("foot_l"), desc.skeleton.find("foot_r")};
+    for (int k = 0; k < 2; ++k) {
+      double gap = 1e9;
+      for (const Eigen::Vector3d& end : {kSoleHeel, kSoleToe}) gap = std::min(gap, (P0[feet[k]] + W0[feet[k]] * end).z());
+      b.swing[k] = gap > kSwingLift;
+    }
+  }
   place_desired_pose(desc, arena, b, b.desired);
   if (b.limp) return;
   const bool parent_space = b.space == ServoSpace::Parent || b.space == ServoSpace::ParentMeathook;
@@ -104,6 +122,29 @@ void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const en
         if (c.body_a == fb || c.body_b == fb) loaded[k] = true;
         if (c.body_b == fb) fn[k] += c.force.z();
         if (c.body_a == fb) fn[k] -= c.force.z();
+      }
+    }
+    // STEPPING AND ANCHORING. A swing foot (the clip lifts it; see the top of boxer_control) has its leg
+    // leaves the support path and aims at the clip's ankle, so the physical foot steps. The feet the clip keeps
+    // planted and that touch the crates anchor the desired motion: the desired root moves by their mean horizontal
+    // error, so the clip's planted feet sit on the physical ones (a step the walk takes, or a foot that slipped,
+    // carries the whole desired body with it instead of leaving the root reaching away from the feet).
+    {
+      std::vector<Eigen::Quaterniond> W0;
+      std::vector<Eigen::Vector3d> P0;
+      pose_fk(skel, b.desired.pose, W0, P0);
+      Eigen::Vector2d err = Eigen::Vector2d::Zero();
+      int planted = 0;
+      for (int k = 0; k < 2; ++k) {
+        if (b.swing[k]) loaded[k] = false;
+        if (!loaded[k]) continue;
+        err += (d.x[b.bodies.body[legs[k].foot]].p - P0[legs[k].foot]).head<2>();
+        ++planted;
+      }
+      if (planted > 0) {
+        err /= planted;
+        b.anchor += err;
+        b.desired.pose.root_position.head<2>() += err;
       }
     }
     // Ankle torque within what the sole can take: |tau| <= Fn * lever (centre of pressure inside the foot), so the

@@ -68,6 +68,11 @@ struct Boxer {
   bool have_person_heading = false;
   double plant_yaw[2] = {0, 0};
   bool plant_yaw_set[2] = {false, false};
+  // Where the desired motion sits on the crates (boxer_control): the horizontal offset (world, m) that keeps the
+  // clip's planted feet on the physical feet, re-measured every tick from the feet that are both planted in the
+  // clip and touching the crates. A walk that steps, or feet that slip, move the whole desired body with them.
+  Eigen::Vector2d anchor = Eigen::Vector2d::Zero();
+  bool swing[2] = {false, false};  // the clip has this foot in the air (a step)
 
   PoseSource source;                      // looping clip or motion-graph walk
   eng::anim::PoseSample desired;          // world-placed desired pose (after fitting the legs to the crates)

@@ -20,7 +20,7 @@ const std::string& PoseSource::current_clip() const {
   return walker_ ? walker_->current_clip() : clip_->name;
 }
 
-eng::anim::PoseSample PoseSource::tick(double dt) {
+eng::anim::PoseSample PoseSource::tick(double dt, const Eigen::Vector2d& anchor) {
   clip_time_[current_clip()] += dt;
   if (timeline_.empty() || timeline_.back().second != current_clip()) timeline_.emplace_back(now_, current_clip());
   now_ += dt;
@@ -33,7 +33,7 @@ eng::anim::PoseSample PoseSource::tick(double dt) {
   // The crates are a small stage: a walk that has wandered off its spot steps back toward it (the way a player
   // or an AI keeps a boxer in range), using the graph's own footwork clips.
   // Only the drift along the facing direction can be undone by stepping forward or back.
-  const Eigen::Vector2d drift = s.pose.root_position.head<2>();
+  const Eigen::Vector2d drift = s.pose.root_position.head<2>() + anchor;
   const Eigen::Vector3d fwd3 = s.pose.rotation[0] * Eigen::Vector3d::UnitX();
   const Eigen::Vector2d fwd = fwd3.head<2>().normalized();
   const double along = fwd.dot(drift);

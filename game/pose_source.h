@@ -19,8 +19,9 @@ class PoseSource {
   static PoseSource graph_walk(const eng::anim::MotionGraph& graph, uint64_t seed);
 
   // The desired pose at the current time, then advances by dt. Keeps a graph walk near its start: when the root
-  // has drifted more than `leash` metres along its heading, it asks the graph for a step back / forward.
-  eng::anim::PoseSample tick(double dt);
+  // (plus `anchor`, the offset at which the boxer places the walk, in the clip frame) has drifted more than
+  // `leash` metres along its heading, it asks the graph for a step back / forward.
+  eng::anim::PoseSample tick(double dt, const Eigen::Vector2d& anchor = Eigen::Vector2d::Zero());
   const std::string& current_clip() const;
   bool is_walk() const { return walker_ != nullptr; }
   eng::anim::GraphWalker* walker() { return walker_.get(); }
