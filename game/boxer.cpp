@@ -24,11 +24,18 @@ constexpr double kBalanceMaxShift = 0.15;  // m
 constexpr double kAnkleLever = 0.0;      // m, see boxer_control (0 = no CoP limit)
 constexpr double kAnkleMinTorque = 10.0;  // N m
 constexpr double kPersonHeadingTau = 1.0;  // s, see boxer_control
+// Person space: the game turns the heading toward the opponent (the stance's heading) at this rate (1/s). Measured
+// (stand 60 s, seeds 1-20): 0 -> 39/40 person (seed 9 creeps round on its feet and falls at 58 s); 0.1 -> 40/40 and
+// every 150 N push on seeds 1-8 survived; 1.0 -> pushes at 270 / 315 / 0 deg fall on seeds 3, 5, 6.
+constexpr double kFaceGain = 0.1;
 constexpr double kClipForward = 0.05;  // m, see place_desired_pose
 constexpr double kRearRise = 0.75;  // see place_desired_pose
 constexpr double kMaxRise = 0.09;  // m
 const Eigen::Vector3d kFootCentre(0.05, 0.0, 0.0);
 constexpr double kSwingLift = 0.015;  // m, see boxer_control
+// A planted ankle standing more than this above its sole's lowest end than the clip's is pressed back down (m).
+// Measured without the deadband: person stand seed 9 fell at 55 s; with 1 cm: 40/40 (with kFaceGain).
+constexpr double kTiptoeDeadband = 0.01;
 // Ends of the sole in the foot frame (content: the foot box, half extents 0.13 x 0.05 x 0.04 at (0.05, 0, -0.04)).
 const Eigen::Vector3d kSoleHeel(-0.08, 0.0, -0.08), kSoleToe(0.18, 0.0, -0.08);  // middle of the sole in the foot frame (content: foot box)
 }  // namespace
@@ -98,9 +105,9 @@ void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const en
     pose_fk(desc.skeleton, b.desired.pose, W0, P0);
     const int feet[2] = {desc.skeleton.find("foot_l"), desc.skeleton.find("foot_r")};
     for (int k = 0; k < 2; ++k) {
-      double gap = 1e9;
-      for (const Eigen::Vector3d& end : {kSoleHeel, kSoleToe}) gap = std::min(gap, (P0[feet[k]] + W0[feet[k]] * end).z());
+      const double gap = std::min((P0[feet[k]] + W0[feet[k]] * kSoleHeel).z(), (P0[feet[k]] + W0[feet[k]] * kSoleToe).z());
       b.swing[k] = gap > kSwingLift;
+      b.clip_ankle_h[k] = P0[feet[k]].z() - gap;  // ankle above the sole's lowest end (the tiptoe test below)
     }
   }
   place_desired_pose(desc, arena, b, b.desired);
@@ -159,7 +166,18 @@ void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const en
     pose_fk(skel, b.desired.pose, Wtmp, P);
     Eigen::Vector3d ankles[2];
     for (int k = 0; k < 2; ++k) {
-      ankles[k] = loaded[k] ? Eigen::Vector3d(d.x[b.bodies.body[legs[k].foot]].p) : P[legs[k].foot];
+      // A planted leg aims at its actual ankle (closed-loop consistency: the legs agree through the ground), lowered
+      // by however much higher the ankle stands over its sole's lowest end than the clip's does: a foot left up on
+      // its toes (seed 1's rear foot after a cross: heel 40 deg up, no load, for seconds) is pressed back down flat
+      // instead of being held there; a flat foot is aimed exactly where it is.
+      ankles[k] = P[legs[k].foot];
+      if (loaded[k]) {
+        const int fb = b.bodies.body[legs[k].foot];
+        const Eigen::Vector3d a = d.x[fb].p;
+        double h = -1e9;
+        for (const Eigen::Vector3d& end : {kSoleHeel, kSoleToe}) h = std::max(h, -(d.x[fb].R * end).z());
+        ankles[k] = a - Eigen::Vector3d(0.0, 0.0, std::max(0.0, h - b.clip_ankle_h[k] - kTiptoeDeadband));
+      }
       for (int bone : {legs[k].thigh, legs[k].shank, legs[k].foot}) {
         b.joints[bone].support = loaded[k];
         b.joints[bone].planted = loaded[k] && bone == legs[k].foot;
@@ -222,6 +240,8 @@ void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const en
     const double h = eng::control::heading_of(b.W_a[0]);
     if (!b.have_person_heading) b.person_heading = h, b.have_person_heading = true;
     b.person_heading += (1.0 - std::exp(-dt / kPersonHeadingTau)) * std::remainder(h - b.person_heading, 2.0 * M_PI);
+    // The game steers the free heading slowly toward facing the opponent (the "turn to face each other").
+    b.person_heading += (1.0 - std::exp(-dt * kFaceGain)) * std::remainder(b.stance.heading - b.person_heading, 2.0 * M_PI);
     heading = b.person_heading;
   }
   eng::control::control_step(skel, b.space, b.gains, b.control_body, b.hook, b.desired, heading, dt, actual, b.servo,

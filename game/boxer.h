@@ -73,6 +73,7 @@ struct Boxer {
   // clip and touching the crates. A walk that steps, or feet that slip, move the whole desired body with them.
   Eigen::Vector2d anchor = Eigen::Vector2d::Zero();
   bool swing[2] = {false, false};  // the clip has this foot in the air (a step)
+  double clip_ankle_h[2] = {0.08, 0.08};  // the clip's ankle height above its sole's lowest end (m)
 
   PoseSource source;                      // looping clip or motion-graph walk
   eng::anim::PoseSample desired;          // world-placed desired pose (after fitting the legs to the crates)
