@@ -71,6 +71,7 @@ flags:
   --push-force N         push scenario: force in newtons
   --push-duration S      push scenario: duration (default 0.1)
   --push-at S            push scenario: start time (default 2)
+  --clip NAME            stand / push: guard, and the clip NAME played once every 3 s (a drill of one clip)
   --servo-wn W           servo natural frequency omega_n, rad/s (default 15)
   --servo-zeta Z         servo damping ratio (default 1)
   --root-spring on|off   the paper's torque-limited root spring on the pelvis tilt (default off)
@@ -134,6 +135,10 @@ eng::Result<Options> parse_cli(const std::vector<std::string>& args) {
       if (!v) return missing();
       if (!kScenarios.count(*v)) return bad("unknown scenario '" + *v + "'");
       o.scenario = *v;
+    } else if (flag == "--clip") {
+      auto v = value();
+      if (!v || v->empty()) return missing();
+      o.drill_clip = *v;
     } else if (flag == "--camera") {
       auto v = value();
       if (!v) return missing();

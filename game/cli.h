@@ -37,6 +37,8 @@ struct Options {
   double push_force = 0.0;
   double push_duration = 0.1;
   double push_at = 2.0;
+  std::string drill_clip;              // stand / push: play this clip once every drill_every seconds (else guard)
+  double drill_every = 3.0;
   // servo gains: ONE pair for the whole body (per joint K = I omega_n^2, D = 2 zeta I omega_n; world.cpp)
   double servo_omega_n = 15.0;         // rad/s
   double servo_zeta = 1.0;

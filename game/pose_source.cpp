@@ -16,14 +16,45 @@ PoseSource PoseSource::graph_walk(const eng::anim::MotionGraph& graph, uint64_t 
   return s;
 }
 
+PoseSource PoseSource::drill(const eng::anim::Clip& guard, const eng::anim::Clip& clip, double every) {
+  PoseSource s;
+  s.clip_ = &guard;
+  s.drill_ = &clip;
+  s.drill_every_ = every;
+  s.drill_next_ = every;
+  return s;
+}
+
 const std::string& PoseSource::current_clip() const {
-  return walker_ ? walker_->current_clip() : clip_->name;
+  if (walker_) return walker_->current_clip();
+  return drill_ && drill_start_ >= 0.0 ? drill_->name : clip_->name;
 }
 
 eng::anim::PoseSample PoseSource::tick(double dt, const Eigen::Vector2d& anchor) {
   clip_time_[current_clip()] += dt;
   if (timeline_.empty() || timeline_.back().second != current_clip()) timeline_.emplace_back(now_, current_clip());
   now_ += dt;
+  if (drill_) {
+    // Guard until the next multiple of drill_every_, then the clip from its start; back to guard from its start.
+    const double t = now_ - dt;
+    if (drill_start_ < 0.0 && t >= drill_next_ - 1e-9) {
+      drill_start_ = t;
+      drill_next_ = t + std::max(drill_every_, drill_->duration() + 0.5);
+      drill_offset_ += eng::anim::sample_clip_pose(*clip_, t_).root_position - drill_->keys.front().root_position;
+      drill_offset_.z() = 0.0;
+    }
+    if (drill_start_ >= 0.0 && t - drill_start_ > drill_->duration()) {
+      drill_offset_ += drill_->keys.back().root_position - clip_->keys.front().root_position;
+      drill_offset_.z() = 0.0;
+      drill_start_ = -1.0;
+      t_ = 0.0;
+    }
+    eng::anim::PoseSample s = drill_start_ >= 0.0 ? eng::anim::sample_clip(*drill_, t - drill_start_)
+                                                  : eng::anim::sample_clip(*clip_, t_);
+    if (drill_start_ < 0.0) t_ += dt;
+    s.pose.root_position += drill_offset_;
+    return s;
+  }
   if (!walker_) {
     eng::anim::PoseSample s = eng::anim::sample_clip(*clip_, t_);
     t_ += dt;

@@ -17,6 +17,10 @@ class PoseSource {
  public:
   static PoseSource looping_clip(const eng::anim::Clip& clip);
   static PoseSource graph_walk(const eng::anim::MotionGraph& graph, uint64_t seed);
+  // A drill: guard (looping), and `clip` played once from guard every `every` seconds, then guard again. The clips
+  // start and end in guard's first key, so the seams are the clips' own; the root carries on from where the clip
+  // ended (a step moves the drill with it).
+  static PoseSource drill(const eng::anim::Clip& guard, const eng::anim::Clip& clip, double every);
 
   // The desired pose at the current time, then advances by dt. Keeps a graph walk near its start: when the root
   // (plus `anchor`, the offset at which the boxer places the walk, in the clip frame) has drifted more than
@@ -32,6 +36,9 @@ class PoseSource {
 
  private:
   const eng::anim::Clip* clip_ = nullptr;
+  const eng::anim::Clip* drill_ = nullptr;  // drill: the clip played every drill_every_ seconds
+  double drill_every_ = 0.0, drill_start_ = -1.0, drill_next_ = 0.0;
+  Eigen::Vector3d drill_offset_ = Eigen::Vector3d::Zero();
   double t_ = 0.0;
   std::unique_ptr<eng::anim::GraphWalker> walker_;
   std::map<std::string, double> clip_time_;

@@ -148,7 +148,9 @@ void add_boxer(World& w, int index, const Eigen::Vector3f& color, bool limp, con
     b.source = PoseSource::graph_walk(w.graph, w.options.seed * 2654435761ull + uint64_t(index));
   } else {
     const int guard = eng::anim::find_clip(w.clips, "guard");
-    b.source = PoseSource::looping_clip(w.clips[guard >= 0 ? guard : 0]);
+    const int drill = w.options.drill_clip.empty() ? -1 : eng::anim::find_clip(w.clips, w.options.drill_clip);
+    b.source = drill >= 0 ? PoseSource::drill(w.clips[guard >= 0 ? guard : 0], w.clips[drill], w.options.drill_every)
+                          : PoseSource::looping_clip(w.clips[guard >= 0 ? guard : 0]);
   }
   w.boxers.push_back(std::move(b));
 }
@@ -175,6 +177,9 @@ eng::Result<std::unique_ptr<World>> make_world(const Options& o) {
   if (!clips) return eng::make_error("boxing: " + clips.error());
   w->clips = std::move(*clips);
   if (w->clips.empty()) return eng::make_error("boxing: no clips in " + dir + "/clips/boxing_clips.gltf");
+  if (!o.drill_clip.empty() && eng::anim::find_clip(w->clips, o.drill_clip) < 0)
+    return eng::make_error("boxing: --clip '" + o.drill_clip + "' is not a clip in " + dir +
+                           "/clips/boxing_clips.gltf (see `build/boxing graph --report g.json` for the names)");
 
   w->arena = make_arena(o.seed);
   w->model.dt = kPhysicsDt;
