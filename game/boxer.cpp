@@ -148,7 +148,7 @@ void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const en
         err += (d.x[b.bodies.body[legs[k].foot]].p - P0[legs[k].foot]).head<2>();
         ++planted;
       }
-      if (planted > 0) {
+      if (planted > 0 && !b.metrics.fell) {  // a fallen body's feet anchor nothing (the walk goes on as authored)
         err /= planted;
         b.anchor += err;
         b.desired.pose.root_position.head<2>() += err;
