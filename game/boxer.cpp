@@ -31,13 +31,13 @@ constexpr double kFaceGain = 0.1;
 constexpr double kClipForward = 0.05;  // m, see place_desired_pose
 constexpr double kRearRise = 0.75;  // see place_desired_pose
 constexpr double kMaxRise = 0.09;  // m
-const Eigen::Vector3d kFootCentre(0.05, 0.0, 0.0);
+const Eigen::Vector3d kFootCentre(0.05, 0.0, 0.0);  // middle of the sole in the foot frame (content: foot box)
 constexpr double kSwingLift = 0.015;  // m, see boxer_control
 // A planted ankle standing more than this above its sole's lowest end than the clip's is pressed back down (m).
 // Measured without the deadband: person stand seed 9 fell at 55 s; with 1 cm: 40/40 (with kFaceGain).
 constexpr double kTiptoeDeadband = 0.01;
 // Ends of the sole in the foot frame (content: the foot box, half extents 0.13 x 0.05 x 0.04 at (0.05, 0, -0.04)).
-const Eigen::Vector3d kSoleHeel(-0.08, 0.0, -0.08), kSoleToe(0.18, 0.0, -0.08);  // middle of the sole in the foot frame (content: foot box)
+const Eigen::Vector3d kSoleHeel(-0.08, 0.0, -0.08), kSoleToe(0.18, 0.0, -0.08);
 }  // namespace
 
 ServoSpace servo_space_from_name(const std::string& name) {
@@ -100,8 +100,8 @@ void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const en
     // Swing feet: the clip (authored on a flat floor at z = 0) has the sole's lowest end more than kSwingLift above
     // its floor. Judged on the clip itself, not after fitting to the crates, where a leg too short for a low crate
     // leaves a planted foot hanging. A raised heel (the cross's pivot) keeps the toe down: not a swing.
-    std::vector<Eigen::Quaterniond> W0;
-    std::vector<Eigen::Vector3d> P0;
+    std::vector<Eigen::Quaterniond>& W0 = b.fk_W;
+    std::vector<Eigen::Vector3d>& P0 = b.fk_P;
     pose_fk(desc.skeleton, b.desired.pose, W0, P0);
     const int feet[2] = {desc.skeleton.find("foot_l"), desc.skeleton.find("foot_r")};
     for (int k = 0; k < 2; ++k) {
@@ -131,14 +131,14 @@ void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const en
         if (c.body_a == fb) fn[k] -= c.force.z();
       }
     }
-    // STEPPING AND ANCHORING. A swing foot (the clip lifts it; see the top of boxer_control) has its leg
-    // leaves the support path and aims at the clip's ankle, so the physical foot steps. The feet the clip keeps
+    // STEPPING AND ANCHORING. A swing foot (the clip lifts it; see the top of boxer_control) takes its leg off the
+    // support path and the leg aims at the clip's ankle, so the physical foot steps. The feet the clip keeps
     // planted and that touch the crates anchor the desired motion: the desired root moves by their mean horizontal
     // error, so the clip's planted feet sit on the physical ones (a step the walk takes, or a foot that slipped,
     // carries the whole desired body with it instead of leaving the root reaching away from the feet).
     {
-      std::vector<Eigen::Quaterniond> W0;
-      std::vector<Eigen::Vector3d> P0;
+      std::vector<Eigen::Quaterniond>& W0 = b.fk_W;
+      std::vector<Eigen::Vector3d>& P0 = b.fk_P;
       pose_fk(skel, b.desired.pose, W0, P0);
       Eigen::Vector2d err = Eigen::Vector2d::Zero();
       int planted = 0;

@@ -35,7 +35,8 @@ eng::anim::PoseSample PoseSource::tick(double dt, const Eigen::Vector2d& anchor)
   if (timeline_.empty() || timeline_.back().second != current_clip()) timeline_.emplace_back(now_, current_clip());
   now_ += dt;
   if (drill_) {
-    // Guard until the next multiple of drill_every_, then the clip from its start; back to guard from its start.
+    // Guard until drill_next_, then the clip from its start (the next play drill_every_ later, or 0.5 s after the clip
+    // ends if it is longer); back to guard from its start, the root carrying on from where the clip left it.
     const double t = now_ - dt;
     if (drill_start_ < 0.0 && t >= drill_next_ - 1e-9) {
       drill_start_ = t;
