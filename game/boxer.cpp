@@ -96,6 +96,8 @@ void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const en
     b.omega_a[i] = d.v_body[body].head<3>();
   }
   b.desired = b.source.tick(dt, Eigen::Rotation2Dd(-b.stance.heading) * b.anchor);
+  bool swing[2];          // the clip has this foot in the air (a step)
+  double clip_ankle_h[2];  // the clip's ankle above its sole's lowest end (m), for the tiptoe test below
   {
     // Swing feet: the clip (authored on a flat floor at z = 0) has the sole's lowest end more than kSwingLift above
     // its floor. Judged on the clip itself, not after fitting to the crates, where a leg too short for a low crate
@@ -106,8 +108,8 @@ void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const en
     const int feet[2] = {desc.skeleton.find("foot_l"), desc.skeleton.find("foot_r")};
     for (int k = 0; k < 2; ++k) {
       const double gap = std::min((P0[feet[k]] + W0[feet[k]] * kSoleHeel).z(), (P0[feet[k]] + W0[feet[k]] * kSoleToe).z());
-      b.swing[k] = gap > kSwingLift;
-      b.clip_ankle_h[k] = P0[feet[k]].z() - gap;  // ankle above the sole's lowest end (the tiptoe test below)
+      swing[k] = gap > kSwingLift;
+      clip_ankle_h[k] = P0[feet[k]].z() - gap;
     }
   }
   place_desired_pose(desc, arena, b, b.desired);
@@ -143,7 +145,7 @@ void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const en
       Eigen::Vector2d err = Eigen::Vector2d::Zero();
       int planted = 0;
       for (int k = 0; k < 2; ++k) {
-        if (b.swing[k]) loaded[k] = false;
+        if (swing[k]) loaded[k] = false;
         if (!loaded[k]) continue;
         err += (d.x[b.bodies.body[legs[k].foot]].p - P0[legs[k].foot]).head<2>();
         ++planted;
@@ -162,7 +164,7 @@ void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const en
         b.joints[legs[k].foot].limit = std::max(kAnkleMinTorque, kAnkleLever * f);
       }
     std::vector<Eigen::Quaterniond>& Wtmp = b.W_d_metric;  // scratch
-    std::vector<Eigen::Vector3d> P;
+    std::vector<Eigen::Vector3d>& P = b.fk_P;
     pose_fk(skel, b.desired.pose, Wtmp, P);
     Eigen::Vector3d ankles[2];
     for (int k = 0; k < 2; ++k) {
@@ -176,7 +178,7 @@ void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const en
         const Eigen::Vector3d a = d.x[fb].p;
         double h = -1e9;
         for (const Eigen::Vector3d& end : {kSoleHeel, kSoleToe}) h = std::max(h, -(d.x[fb].R * end).z());
-        ankles[k] = a - Eigen::Vector3d(0.0, 0.0, std::max(0.0, h - b.clip_ankle_h[k] - kTiptoeDeadband));
+        ankles[k] = a - Eigen::Vector3d(0.0, 0.0, std::max(0.0, h - clip_ankle_h[k] - kTiptoeDeadband));
       }
       for (int bone : {legs[k].thigh, legs[k].shank, legs[k].foot}) {
         b.joints[bone].support = loaded[k];

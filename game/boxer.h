@@ -72,10 +72,9 @@ struct Boxer {
   // clip's planted feet on the physical feet, re-measured every tick from the feet that are both planted in the
   // clip and touching the crates. A walk that steps, or feet that slip, move the whole desired body with them.
   Eigen::Vector2d anchor = Eigen::Vector2d::Zero();
-  bool swing[2] = {false, false};
-  std::vector<Eigen::Quaterniond> fk_W;  // scratch for forward kinematics of desired poses (no per-tick allocation)
-  std::vector<Eigen::Vector3d> fk_P;  // the clip has this foot in the air (a step)
-  double clip_ankle_h[2] = {0.08, 0.08};  // the clip's ankle height above its sole's lowest end (m)
+  // Scratch for forward kinematics of desired poses in boxer_control (no per-tick allocation).
+  std::vector<Eigen::Quaterniond> fk_W;
+  std::vector<Eigen::Vector3d> fk_P;
 
   PoseSource source;                      // looping clip or motion-graph walk
   eng::anim::PoseSample desired;          // world-placed desired pose (after fitting the legs to the crates)
