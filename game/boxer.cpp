@@ -5,6 +5,7 @@
 
 #include "engine/control/orientation_error.h"
 #include "engine/control/person_space.h"
+#include "engine/control/support_polygon.h"
 #include "engine/control/world_pose.h"
 #include "engine/physics/dynamics.h"
 #include "engine/physics/step.h"
@@ -66,7 +67,12 @@ void place_desired_pose(const eng::assets::CharacterDesc& desc, const Arena& are
   // onto its outer edge (trace in the report), every lead-higher boxer stood. Measured rise: 0.5 x step -> the
   // 12 cm steps fall, 0.75 x step -> the 16 cm steps fall (lead leg over-extended); 0.75 x step capped at 9 cm ->
   // all stand. Lead-higher: any rise makes them fall (0.25 x step: s5 at 5.5 s; 0.5: three of five).
-  const double base = std::min(b.stance.lead_top, b.stance.rear_top) + std::min(kMaxRise, kRearRise * std::max(0.0, b.stance.rear_top - b.stance.lead_top));
+  // Balance QP: no rise. The clip stands on the lower crate and the rear leg bends up to the higher one. Measured
+  // (stand 30 s seeds 1-12, drills seeds 1-4): rise 0.5 x step -> seed 2's lead foot hangs above its crate and the
+  // boxer tips over before it lands; 0.25 -> 24/24 stand, cross and rear uppercut drills 7/8; 0 -> 24/24, every
+  // punch and defence drill 8/8.
+  const double rise = b.balance_qp ? 0.0 : std::min(kMaxRise, kRearRise * std::max(0.0, b.stance.rear_top - b.stance.lead_top));
+  const double base = std::min(b.stance.lead_top, b.stance.rear_top) + rise;
   const Eigen::Quaterniond yaw(Eigen::AngleAxisd(b.stance.heading, Eigen::Vector3d::UnitZ()));
   // The guard clip's feet are not centred on the stance point (ankles at +0.17 / -0.24 m): placed as authored the
   // lead heel hangs ~1 cm over the seam onto the rear foot's crate, and when that crate is the higher one the heel
@@ -83,6 +89,176 @@ void place_desired_pose(const eng::assets::CharacterDesc& desc, const Arena& are
                             {s.find("thigh_r"), s.find("shank_r"), s.find("foot_r")}};
   fit_legs_to_ground(s, legs, base, [&](double x, double y) { return arena.top_at(x, y); }, out.pose);
 }
+
+namespace {
+// Centre of mass of the actual body (position, velocity) and of the desired pose (its forward kinematics Wd / Pd),
+// and the support centres: the mean of the sole centres of the feet in `feet_on` (actual, desired).
+struct ComAndSupport {
+  Eigen::Vector3d com_a = Eigen::Vector3d::Zero(), vcom = Eigen::Vector3d::Zero(), com_d = Eigen::Vector3d::Zero();
+  Eigen::Vector3d centre_a = Eigen::Vector3d::Zero(), centre_d = Eigen::Vector3d::Zero();
+  int feet = 0;  // how many feet the centres average
+};
+
+ComAndSupport com_and_support(const eng::physics::Data& d, const eng::assets::CharacterDesc& desc, const Boxer& b,
+                              const std::vector<Eigen::Quaterniond>& Wd, const std::vector<Eigen::Vector3d>& Pd,
+                              const int foot_bones[2], const bool feet_on[2]) {
+  ComAndSupport r;
+  const double M = desc.total_mass();
+  for (int i = 0; i < desc.skeleton.size(); ++i) {
+    const int body = b.bodies.body[i];
+    const double mi = desc.bones[i].mass;
+    const Eigen::Vector3d c = d.com_world[body];
+    r.com_a += mi * c;
+    r.vcom += mi * (d.v_body[body].tail<3>() + d.v_body[body].head<3>().cross(c));
+    r.com_d += mi * (Pd[i] + Wd[i] * desc.bones[i].com);
+  }
+  r.com_a /= M, r.vcom /= M, r.com_d /= M;
+  for (int k = 0; k < 2; ++k) {
+    if (!feet_on[k]) continue;
+    const int fb = b.bodies.body[foot_bones[k]];
+    r.centre_a += d.x[fb].p + d.x[fb].R * kFootCentre;
+    r.centre_d += Pd[foot_bones[k]] + Wd[foot_bones[k]] * kFootCentre;
+    ++r.feet;
+  }
+  if (r.feet > 0) r.centre_a /= r.feet, r.centre_d /= r.feet;
+  return r;
+}
+
+// The balance QP's inputs for one boxer (balance_qp.h), solved, and its joint torques written to d.tau.
+//  * Contacts: the touching contact points (gap < kQpTouchGap) of the feet the clip plants, from the last step.
+//  * Com: PD toward the desired pose's com, measured against the support (desired com - desired feet centre,
+//    put on the actual feet centre), with the clip's com velocity over its feet as feed-forward: Kudoh's com
+//    acceleration as a PD target (thesis sec. 2.5.1). The target is clamped into the contacts' support polygon.
+//  * Angular momentum about the com damped toward zero.
+//  * Every bone: eq. 3 as an acceleration, alpha = omega_n^2 Delta(W_d, W_a) + 2 zeta omega_n (omega_d - omega_a),
+//    weighted by the bone's servo inertia (heavy subtrees matter most, as eq. 3's gains scale with them).
+//  * Touching feet: their contact points held (balance_qp.h) and a strong orientation task (clip's tilt, own
+//    heading); swing feet: the ankle toward the desired ankle (PD); a planted foot that hovers is lowered.
+// Measured against the PD balance layer (README): stand, pushes and every punch / defence drill are better.
+constexpr double kQpComOmega = 6.0;     // rad/s, com PD natural frequency (critically damped)
+constexpr double kQpMomentumDamping = 4.0;  // 1/s
+constexpr double kQpMu = 0.6;           // friction used in the plan (the crates and soles have 0.9)
+// Weight of a touching foot's orientation task (kg m^2 like the bones' servo inertias; the pelvis has 8.3). Measured
+// (walk 40 s, seeds 1-6): 1 / 10 / 50 / 500 -> first falls at 6.9-24 / 8.0-21 / 7.5-23 / 5.9-22 s: a weak choice.
+constexpr double kQpPlantedFootWeight = 50.0;
+constexpr double kQpTouchGap = 0.002;  // m, a contact closer than this carries load in the plan
+constexpr double kQpLand = 0.03;        // m
+constexpr double kQpSupportMargin = 0.03;  // m, see the com target below
+constexpr double kQpMaxComSpeed = 1.0;  // m/s, the desired com velocity's bound
+constexpr double kQpMaxComAcc = 6.0;    // m/s^2, the desired com acceleration's bound
+
+void boxer_balance_qp(const eng::physics::Model& m, eng::physics::Data& d, const eng::assets::CharacterDesc& desc,
+                      Boxer& b, const bool loaded[2], double dt) {
+  namespace ph = eng::physics;
+  const auto& skel = desc.skeleton;
+  const int n = skel.size();
+  const int pelvis = b.bodies.body[0];
+  eng::control::BalanceQpInput& in = b.qp_in;
+  in.clear();
+  in.root_body = pelvis;
+  in.dof_begin = m.bodies[pelvis].v_index;
+  in.dof_end = in.dof_begin;
+  for (size_t i = 1; i < m.bodies.size(); ++i)
+    if (m.bodies[i].root == pelvis) in.dof_end = std::max(in.dof_end, m.bodies[i].v_index + m.bodies[i].nv);
+  const int feet[2] = {skel.find("foot_l"), skel.find("foot_r")};
+
+  // Contacts of the planted feet. A foot is held (planted) only while it actually touches: a foot the clip plants
+  // but that hovers a little above its crate is lowered onto it instead (below).
+  bool touching[2] = {false, false};
+  for (const auto& c : d.contacts) {
+    if (c.point.depth < -kQpTouchGap) continue;  // speculative, not touching
+    for (int k = 0; k < 2; ++k) {
+      const int fb = b.bodies.body[feet[k]];
+      if (!loaded[k] || (c.body_a != fb && c.body_b != fb)) continue;
+      touching[k] = true;
+      eng::control::QpContact qc;
+      qc.body = fb;
+      qc.point = c.point.position;
+      qc.normal = c.body_b == fb ? c.point.normal : Eigen::Vector3d(-c.point.normal);
+      qc.mu = kQpMu;
+      in.contacts.push_back(qc);
+    }
+  }
+
+  // Desired pose FK (after anchoring / leg fitting): com and feet.
+  std::vector<Eigen::Quaterniond>& Wd = b.fk_W;
+  std::vector<Eigen::Vector3d>& Pd = b.fk_P;
+  pose_fk(skel, b.desired.pose, Wd, Pd);
+  const ComAndSupport cs = com_and_support(d, desc, b, Wd, Pd, feet, loaded);
+  const Eigen::Vector3d &com_a = cs.com_a, &vcom = cs.vcom, &com_d = cs.com_d, &centre_a = cs.centre_a,
+                        &centre_d = cs.centre_d;
+  const int nl = cs.feet;
+  Eigen::Vector3d rel_d = com_d - centre_d;  // the clip's com over its feet
+  if (nl == 0) rel_d.setZero();
+  // The clip's com velocity over its feet, differenced tick to tick; not across a change of the planted feet
+  // (the support centre jumps) and at most kQpMaxComSpeed.
+  const int support_set = (loaded[0] ? 1 : 0) | (loaded[1] ? 2 : 0);
+  Eigen::Vector3d v_d = Eigen::Vector3d::Zero();
+  if (b.have_com_d && support_set == b.qp_support_set) v_d = (rel_d - b.com_d_rel_last) / dt;
+  if (v_d.norm() > kQpMaxComSpeed) v_d *= kQpMaxComSpeed / v_d.norm();
+  b.com_d_rel_last = rel_d;
+  b.qp_support_set = support_set;
+  b.have_com_d = true;
+  if (nl > 0) {
+    Eigen::Vector3d e = (com_a - centre_a) - rel_d;
+    e.z() = com_a.z() - com_d.z();
+    // The target's floor projection clamped into the support polygon of the touching contacts (less a margin):
+    // a target the ground reaction cannot reach (after a step that landed short, say) is not chased over the edge.
+    if (!in.contacts.empty()) {
+      b.qp_pts.clear();
+      for (const auto& c : in.contacts) b.qp_pts.push_back(c.point.head<2>());
+      eng::control::convex_hull_2d(b.qp_pts, b.qp_hull);
+      const Eigen::Vector2d target = com_a.head<2>() - e.head<2>();
+      e.head<2>() = com_a.head<2>() - eng::control::clamp_to_polygon(b.qp_hull, target, kQpSupportMargin);
+    }
+    const double kp = kQpComOmega * kQpComOmega, kd = 2.0 * kQpComOmega;
+    in.com_acc = -kp * e - kd * (vcom - v_d);
+    if (in.com_acc.norm() > kQpMaxComAcc) in.com_acc *= kQpMaxComAcc / in.com_acc.norm();
+    const ph::Vec6 h = ph::spatial_momentum(m, d, pelvis);
+    const Eigen::Vector3d k_com = h.head<3>() - com_a.cross(h.tail<3>());
+    in.momentum_rate = -kQpMomentumDamping * k_com;
+  } else {
+    in.com_acc = m.gravity;  // airborne: nothing to plan with
+  }
+
+  // Bone orientation tasks (eq. 3 as accelerations).
+  const double wn = b.gains.omega_n, kp = wn * wn, kd = 2.0 * b.gains.zeta * wn;
+  for (int i = 0; i < n; ++i) {
+    eng::control::QpAngularTask t;
+    t.body = b.bodies.body[i];
+    t.alpha = kp * eng::control::orientation_error(b.servo.W_d[i], b.W_a[i]) + kd * (b.servo.omega_d[i] - b.omega_a[i]);
+    t.weight = b.control_body.I_eff[i];
+    in.angular.push_back(t);
+  }
+  for (int k = 0; k < 2; ++k) {
+    const int fb = b.bodies.body[feet[k]];
+    if (touching[k]) {
+      // Held through its contact points (balance_qp.h); the foot's orientation task rolls a foot standing on an
+      // edge or corner flat about it, strongly (the sole is the support).
+      // The target keeps the clip's tilt of the foot but takes the foot's actual heading: the contacts have no
+      // torsional friction, so a planted foot is not twisted toward the clip's yaw (the body turns above it).
+      const Eigen::Quaterniond& Wd_foot = b.servo.W_d[feet[k]];
+      const Eigen::Quaterniond target =
+          eng::control::yaw_rotation(eng::control::heading_of(b.W_a[feet[k]]) - eng::control::heading_of(Wd_foot)) *
+          Wd_foot;
+      in.angular[feet[k]].alpha = kp * eng::control::orientation_error(target, b.W_a[feet[k]]) - kd * b.omega_a[feet[k]];
+      in.angular[feet[k]].weight = kQpPlantedFootWeight;
+    } else {
+      eng::control::QpPointTask t;
+      t.body = fb;
+      t.point = d.x[fb].p;
+      const Eigen::Vector3d v = d.v_body[fb].tail<3>() + d.v_body[fb].head<3>().cross(t.point);
+      // A planted-but-hovering foot aims kQpLand below where it is (it comes down onto the crate).
+      const Eigen::Vector3d target = loaded[k] ? Eigen::Vector3d(t.point - Eigen::Vector3d(0, 0, kQpLand)) : Pd[feet[k]];
+      t.acc = kp * (target - t.point) - kd * v;
+      t.weight = 10.0 * desc.bones[feet[k]].mass;
+      in.points.push_back(t);
+    }
+  }
+  eng::control::balance_qp_solve(m, d, in, b.qp_params, b.qp_ws, b.qp_out);
+  for (int k = 0; k < in.dof_end - in.dof_begin; ++k) d.tau[in.dof_begin + k] = k < 6 ? 0.0 : b.qp_out.tau[k];
+}
+}  // namespace
 
 void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const eng::assets::CharacterDesc& desc,
                    const Arena& arena, Boxer& b, double dt) {
@@ -115,6 +291,7 @@ void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const en
   place_desired_pose(desc, arena, b, b.desired);
   if (b.limp) return;
   const bool parent_space = b.space == ServoSpace::Parent || b.space == ServoSpace::ParentMeathook;
+  bool loaded[2] = {d.time == 0.0, d.time == 0.0};  // placed on the crates: planted at the start
   if (!b.joints.empty() && !parent_space) {
     // Implicit world-space servo rooted at the feet: aim the leg targets at the ankles where they actually are
     // (closed-loop consistency, stance_ik.h); the legs then carry the pelvis to the clip's root.
@@ -122,7 +299,6 @@ void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const en
                               {skel.find("thigh_r"), skel.find("shank_r"), skel.find("foot_r")}};
     // A leg is on the support path only while its foot touches something (contacts of the last step); a lifted
     // leg is servoed from the pelvis like an arm and aims at the ground-fitted desired ankle.
-    bool loaded[2] = {d.time == 0.0, d.time == 0.0};  // placed on the crates: planted at the start
     double fn[2] = {0.0, 0.0};  // normal (z) force on each foot from the last solve (N)
     for (const auto& c : d.contacts) {
       if (c.point.depth < -0.02) continue;  // speculative and more than 2 cm away (margin against flicker)
@@ -191,28 +367,11 @@ void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const en
     //   root_d += -(kp e + kd v)   (clamped), e = (com_a - centre_a) - (com_d - centre_d)
     // The legs are re-fitted below from the shifted root to the actual ankles, so the support servo (ankles,
     // knees, hips) pushes the body back over the feet. Only while a foot is planted.
-    if (loaded[0] || loaded[1]) {
-      const double M = desc.total_mass();
-      Eigen::Vector3d com_a = Eigen::Vector3d::Zero(), vcom = Eigen::Vector3d::Zero(), com_d = Eigen::Vector3d::Zero();
-      for (int i = 0; i < n; ++i) {
-        const int body = b.bodies.body[i];
-        const double mi = desc.bones[i].mass;
-        const Eigen::Vector3d c = d.com_world[body];
-        com_a += mi * c;
-        vcom += mi * (d.v_body[body].tail<3>() + d.v_body[body].head<3>().cross(c));
-        com_d += mi * (P[i] + Wtmp[i] * desc.bones[i].com);
-      }
-      com_a /= M, vcom /= M, com_d /= M;
-      Eigen::Vector3d centre_a = Eigen::Vector3d::Zero(), centre_d = Eigen::Vector3d::Zero();
-      int nl = 0;
-      for (int k = 0; k < 2; ++k) {
-        if (!loaded[k]) continue;
-        const int fb = b.bodies.body[legs[k].foot];
-        centre_a += d.x[fb].p + d.x[fb].R * kFootCentre;
-        centre_d += P[legs[k].foot] + Wtmp[legs[k].foot] * kFootCentre;
-        ++nl;
-      }
-      centre_a /= nl, centre_d /= nl;
+    if (!b.balance_qp && (loaded[0] || loaded[1])) {
+      const int foot_bones[2] = {legs[0].foot, legs[1].foot};
+      const ComAndSupport cs = com_and_support(d, desc, b, Wtmp, P, foot_bones, loaded);
+      const Eigen::Vector3d &com_a = cs.com_a, &com_d = cs.com_d, &centre_a = cs.centre_a, &centre_d = cs.centre_d;
+      Eigen::Vector3d vcom = cs.vcom;
       Eigen::Vector3d e = (com_a - centre_a) - (com_d - centre_d);
       e.z() = 0, vcom.z() = 0;
       Eigen::Vector3d shift = -(kBalanceKp * e + kBalanceKd * vcom);
@@ -248,6 +407,10 @@ void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const en
   }
   eng::control::control_step(skel, b.space, b.gains, b.control_body, b.hook, b.desired, heading, dt, actual, b.servo,
                              help);
+  if (b.balance_qp) {
+    boxer_balance_qp(m, d, desc, b, loaded, dt);
+    return;
+  }
   // Root spring (paper section V): a torque-limited spring on the pelvis TILT toward the desired root's tilt, the
   // heading left free (no yaw torque), so it helps dynamic balance without steering. External: no reaction.
   b.root_spring.update(b.root_params, dt);

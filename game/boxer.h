@@ -8,6 +8,7 @@
 
 #include "engine/anim/clip.h"
 #include "engine/assets/character.h"
+#include "engine/control/balance_qp.h"
 #include "engine/control/controller.h"
 #include "engine/control/implicit_servo.h"
 #include "engine/control/inertial_servo.h"
@@ -64,6 +65,17 @@ struct Boxer {
   std::vector<eng::control::ImplicitServoJoint> joints;
   std::vector<Eigen::Vector3d> q_joint, spring_ref;
   bool limp = false;  // a ragdoll: no servo at all
+  // Balance QP (--balance qp): joint torques from engine/control/balance_qp.h instead of the implicit springs and
+  // the PD root shift. Inputs rebuilt every tick (capacity kept), workspace and last result kept for reports.
+  bool balance_qp = false;
+  eng::control::BalanceQpInput qp_in;
+  eng::control::BalanceQpParams qp_params;
+  eng::control::BalanceQp qp_ws;
+  eng::control::BalanceQpResult qp_out;
+  Eigen::Vector3d com_d_rel_last = Eigen::Vector3d::Zero();  // desired com - desired support centre, last tick
+  bool have_com_d = false;
+  int qp_support_set = 0;
+  std::vector<Eigen::Vector2d> qp_pts, qp_hull;  // scratch: contact points on the floor, their hull  // which feet were planted last tick (bit 0 left, bit 1 right)
   double person_heading = 0.0;  // person space: low-passed pelvis heading (boxer_control)
   bool have_person_heading = false;
   double plant_yaw[2] = {0, 0};

@@ -74,6 +74,8 @@ flags:
   --clip NAME            stand / push: guard, and the clip NAME played once every 3 s (a drill of one clip)
   --servo-wn W           servo natural frequency omega_n, rad/s (default 15)
   --servo-zeta Z         servo damping ratio (default 1)
+  --balance qp|pd        qp: the balance QP computes the joint torques (centre of pressure in the feet);
+                         pd: implicit world-space springs plus a PD shift of the desired root (default qp)
   --root-spring on|off   the paper's torque-limited root spring on the pelvis tilt (default off)
   --root-spring-max NM   its torque limit in N m (default 120)
 graph flags:
@@ -193,6 +195,11 @@ eng::Result<Options> parse_cli(const std::vector<std::string>& args) {
       if (!parse_double(*v, 0.0, 1e4, x)) return bad(flag + " must be a non-negative number, got '" + *v + "'");
       if (flag == "--servo-wn") o.servo_omega_n = x;
       else o.servo_zeta = x;
+    } else if (flag == "--balance") {
+      auto v = value();
+      if (!v) return missing();
+      if (*v != "qp" && *v != "pd") return bad("--balance must be qp or pd, got '" + *v + "'");
+      o.balance = *v;
     } else if (flag == "--root-spring") {
       auto v = value();
       if (!v) return missing();

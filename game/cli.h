@@ -45,6 +45,9 @@ struct Options {
   // Root spring (paper section V: torque-limited, "for some dynamic balance situations"); off by default: the
   // boxers stand with no root help at all.
   std::string root_spring = "off";     // on | off
+  // Balance: "qp" = the balance QP (engine/control/balance_qp.h) turns the desired pose into joint torques;
+  // "pd" = eq. 3 as implicit joint springs plus the PD shift of the desired root (boxer.cpp's balance layer).
+  std::string balance = "qp";
   double root_spring_max = 120.0;      // N m, its torque limit
   // graph tool
   std::string graph_report;

@@ -118,6 +118,7 @@ void setup_implicit_servo(World& w, Boxer& b) {
     j.K = eng::control::servo_k1(b.gains, I[i]);
     j.D = eng::control::servo_k2(b.gains, I[i]);
     j.limit = j.planted ? kAnkleTorqueLimit : kServoTorqueLimit;
+    if (b.balance_qp) continue;  // the QP writes joint torques (d.tau); no servo springs in the model
     body.stiffness = j.K;
     body.damping += j.D;  // on top of the content's passive joint damping
   }
@@ -134,6 +135,8 @@ void add_boxer(World& w, int index, const Eigen::Vector3f& color, bool limp, con
   const uint32_t group = 2u << index;
   b.bodies = add_character(w.model, w.boxer_desc, "b" + std::to_string(index) + "_", group, 0xffffffffu, false);
   b.space = servo_space_from_name(w.options.servo);
+  b.balance_qp = !limp && w.options.balance == "qp" && b.space != eng::control::ServoSpace::Parent &&
+                 b.space != eng::control::ServoSpace::ParentMeathook;
   b.gains.omega_n = w.options.servo_omega_n;
   b.gains.zeta = w.options.servo_zeta;
   b.gains.stable_pd = true;

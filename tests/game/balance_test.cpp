@@ -1,6 +1,7 @@
-// The boxers' balance end to end (no rendering), the claims of the README's "boxer and inertial servo" section:
-// world and person space recover from a 150 N x 0.1 s chest push from every direction with no root help, and
-// parent space without the meathook falls unpushed (the paper's baseline). Seed 3 is the stance whose 315 deg push
+// The boxers' balance end to end (no rendering), the claims of the README's "boxer and inertial servo" and
+// "balance QP" sections: world and person space recover from a 150 N x 0.1 s chest push from every direction with
+// no root help, parent space without the meathook falls unpushed (the paper's baseline), and the balance QP (the
+// default) keeps the boxer up through the punches that floor the PD balance layer. Seed 3 is the stance whose 315 deg push
 // used to floor person space (its rear crate is 12 cm lower than the lead one).
 #include <gtest/gtest.h>
 
@@ -65,6 +66,17 @@ TEST(Drill, ADefensiveClipPlayedEveryThreeSecondsKeepsTheBoxerUp) {
   // block_high moves the arms and trunk, not the root: the drill of it stands (see README for the clips that don't).
   const auto m = run({"--scenario", "stand", "--seed", "2", "--clip", "block_high"}, 10.0);
   EXPECT_FALSE(m.fell) << "fell at " << m.fell_at << " s (" << m.fell_reason << ")";
+}
+
+TEST(Drill, TheBalanceQpKeepsThePunchesUpWhereThePdBalanceLayerFalls) {
+  // The jab's 5 cm lunge with the arm thrown forward floors the PD balance layer (README: the drill's diagnosis);
+  // the QP keeps the centre of pressure in the feet. Seed 2: the PD layer loses both boxers by 7.2 s.
+  const auto pd = run({"--scenario", "stand", "--seed", "2", "--clip", "jab", "--balance", "pd"}, 10.0);
+  EXPECT_TRUE(pd.fell) << "the baseline should fall here (otherwise this test shows nothing)";
+  for (const char* clip : {"jab", "lead_uppercut", "combo_jab_cross", "duck"}) {
+    const auto qp = run({"--scenario", "stand", "--seed", "2", "--clip", clip}, 10.0);
+    EXPECT_FALSE(qp.fell) << clip << ": fell at " << qp.fell_at << " s (" << qp.fell_reason << ")";
+  }
 }
 
 }  // namespace

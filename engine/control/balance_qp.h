@@ -1,0 +1,122 @@
+#pragma once
+// Balance QP: joint torques for one floating-base articulation that keep the ground reaction inside the
+// support (centre of pressure within the contact polygon, every contact force inside its friction cone) while
+// tracking as much of the desired motion as that allows.
+//
+// WHY. The world-space servo (eq. 3, as implicit joint springs) plus a PD shift of the desired root holds
+// quiet stances and 150 N pushes, but a punch's whole-body motion (a 5 cm lunge with the arm thrown forward)
+// asks the feet for a ground reaction the soles cannot give: the feet roll onto an edge, the legs leave the
+// support path and the boxer falls (issue 5 diagnosis, README). What the body needs is Kudoh's balance QP
+// (thesis sec. 2.5: centre-of-mass acceleration as PD toward its target, ZMP kept in the support area, joint
+// accelerations as the unknowns): find the accelerations the ground CAN support, closest to the desired ones.
+//
+// FORMULATION (two stages, as Lee & Goswami's momentum-based balance control: admissible ground reaction
+// first, then the accelerations that realise it; each stage is a small least-squares problem):
+//  1. Ground reaction. Each contact point c (normal n_c on the body, friction mu) carries
+//       f_c = sum_k beta_ck u_ck, beta >= 0,  u_ck = n_c +- mu t1_c, n_c +- mu t2_c   (inner friction pyramid)
+//     so any beta >= 0 is a force inside the cone and the centre of pressure inside the contact points' hull:
+//     Kudoh's ZMP constraint (2.39) for any polygon. beta minimises
+//       w_F |sum f_c - F_des|^2 + w_N |sum (p_c - com) x f_c - N_des|^2 + eps |beta|^2
+//     with F_des = m (a_com_des - g) (Kudoh: the com acceleration as a PD target) and N_des the desired rate of
+//     the centroidal angular momentum. A non-negative least-squares problem, solved exactly by Lawson & Hanson's active set.
+//  2. Accelerations. With the reaction f fixed, qacc minimises the weighted task errors
+//       sum_i w_i |J_i qacc + Jdot_i v - a_i|^2 + eps |qacc|^2
+//     (a_i: each bone's desired world angular acceleration -- the inertial servo's eq. 3 as an acceleration --,
+//     point accelerations, e.g. a swing foot, and, heavily weighted, zero acceleration of every contact point)
+//     subject to, exactly,
+//       M_root qacc + c_root = (J^T f)_root      (Newton-Euler of the whole body: the floating base is unactuated)
+//     solved through its KKT system. Then tau = M qacc + c - J^T f; its root rows vanish by construction.
+// Where the desired com acceleration is not admissible, stage 1 returns the closest reaction inside the cones,
+// stage 2 makes the whole body consistent with it (arms and trunk take up the angular momentum: Kudoh's arm
+// swing and waist bend emerge), and the torques never ask the feet to pull or slide.
+//
+// All quantities world frame; the articulation is a contiguous DoF block [dof_begin, dof_end) whose first six
+// DoFs are the free root joint. Uses forward_kinematics results (x, com_world, v_body, cdof, cdof_dot).
+#include <Eigen/LU>
+#include <vector>
+
+#include "engine/physics/data.h"
+#include "engine/physics/model.h"
+
+namespace eng::control {
+
+using physics::MatX;
+using physics::Vec3;
+using physics::Vec6;
+using physics::VecX;
+
+struct QpContact {
+  int body = 0;
+  Vec3 point = Vec3::Zero();
+  Vec3 normal = Vec3::UnitZ();  // unit, the direction the ground pushes the body
+  double mu = 0.6;
+};
+
+// Desired world angular acceleration of a body (rad/s^2), weight per (rad/s^2)^2.
+struct QpAngularTask {
+  int body = 0;
+  Vec3 alpha = Vec3::Zero();
+  double weight = 1.0;
+};
+
+// Desired classical acceleration of a point fixed to a body (m/s^2).
+struct QpPointTask {
+  int body = 0;
+  Vec3 point = Vec3::Zero();
+  Vec3 acc = Vec3::Zero();
+  double weight = 1.0;
+};
+
+struct BalanceQpInput {
+  int dof_begin = 0, dof_end = 0;  // the articulation's DoFs (first six: the free root)
+  int root_body = 0;               // its root body (subtree for com / momentum)
+  Vec3 com_acc = Vec3::Zero();     // desired com acceleration (world, m/s^2)
+  Vec3 momentum_rate = Vec3::Zero();  // desired rate of centroidal angular momentum (N m)
+  std::vector<QpContact> contacts;
+  std::vector<QpAngularTask> angular;
+  std::vector<QpPointTask> points;
+  void clear() {
+    contacts.clear(), angular.clear(), points.clear();
+  }
+};
+
+struct BalanceQpParams {
+  double w_force = 1.0;     // stage 1 weight on the net force error (per N^2)
+  double w_moment = 1.0;    // stage 1 weight on the moment error (per (N m)^2)
+  double reg_beta = 1e-6;   // stage 1 Tikhonov term relative to the mean diagonal (spreads the load)
+  double reg_qacc = 1e-4;   // stage 2 damping of qacc (per (unit acceleration)^2), keeps the KKT system regular
+  double w_hold = 1e4;      // stage 2 weight of "contact points do not accelerate" (per (m/s^2)^2)
+  double hold_damping = 20.0;  // 1/s: the held points' target acceleration is -hold_damping * their velocity
+};
+
+struct BalanceQpResult {
+  VecX qacc, tau;          // over the block (tau's first six ~ 0)
+  Vec3 force = Vec3::Zero();   // planned net ground force (N)
+  Vec3 moment = Vec3::Zero();  // planned moment about the com (N m)
+  Vec3 cop = Vec3::Zero();     // planned centre of pressure (force-weighted contact point; com if no force)
+  std::vector<Vec3> contact_force;  // per input contact
+  double root_residual = 0.0;  // |tau_root| (N, N m): how exactly stage 2 met the Newton-Euler rows
+};
+
+// Workspace (sized on first use, reused: no allocation per call once warm).
+struct BalanceQp {
+  MatX M_full, J, KKT, A, F, Q, rhs, sol, HQ1;
+  VecX c_full, beta, b, q, g, JtF;
+  Eigen::PartialPivLU<MatX> lu;
+  std::vector<Vec3> basis;
+  // stage 1 active-set NNLS
+  std::vector<int> passive;
+  std::vector<char> in_passive;
+  MatX Qpp;
+  VecX qp, z, w;
+};
+
+void balance_qp_solve(const physics::Model& m, const physics::Data& d, const BalanceQpInput& in,
+                      const BalanceQpParams& p, BalanceQp& ws, BalanceQpResult& out);
+
+// Helpers (also used by the tests). Velocity-product ("bias") accelerations with qacc = 0, world frame:
+// a body's angular acceleration, and the classical acceleration of a point fixed to it.
+Vec3 bias_angular_acceleration(const physics::Model& m, const physics::Data& d, int body);
+Vec3 bias_point_acceleration(const physics::Model& m, const physics::Data& d, int body, const Vec3& point);
+
+}  // namespace eng::control
