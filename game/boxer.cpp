@@ -32,6 +32,7 @@ constexpr double kFaceGain = 0.1;
 constexpr double kClipForward = 0.05;  // m, see place_desired_pose
 constexpr double kRearRise = 0.75;  // see place_desired_pose
 constexpr double kMaxRise = 0.09;  // m
+constexpr double kBaseTau = 0.3;   // s, see boxer_control (the clip's floor under the actual feet)
 const Eigen::Vector3d kFootCentre(0.05, 0.0, 0.0);  // middle of the sole in the foot frame (content: foot box)
 constexpr double kSwingLift = 0.015;  // m, see boxer_control
 // A planted ankle standing more than this above its sole's lowest end than the clip's is pressed back down (m).
@@ -72,7 +73,9 @@ void place_desired_pose(const eng::assets::CharacterDesc& desc, const Arena& are
   // boxer tips over before it lands; 0.25 -> 24/24 stand, cross and rear uppercut drills 7/8; 0 -> 24/24, every
   // punch and defence drill 8/8.
   const double rise = b.balance_qp ? 0.0 : std::min(kMaxRise, kRearRise * std::max(0.0, b.stance.rear_top - b.stance.lead_top));
-  const double base = std::min(b.stance.lead_top, b.stance.rear_top) + rise;
+  // Balance QP: once the feet have moved (a walk's steps), the crates under the actual feet (boxer_control).
+  const double base = b.balance_qp && b.have_support_base ? b.support_base
+                                                          : std::min(b.stance.lead_top, b.stance.rear_top) + rise;
   const Eigen::Quaterniond yaw(Eigen::AngleAxisd(b.stance.heading, Eigen::Vector3d::UnitZ()));
   // The guard clip's feet are not centred on the stance point (ankles at +0.17 / -0.24 m): placed as authored the
   // lead heel hangs ~1 cm over the seam onto the rear foot's crate, and when that crate is the higher one the heel
@@ -135,7 +138,9 @@ ComAndSupport com_and_support(const eng::physics::Data& d, const eng::assets::Ch
 //  * Touching feet: their contact points held (balance_qp.h) and a strong orientation task (clip's tilt, own
 //    heading); swing feet: the ankle toward the desired ankle (PD); a planted foot that hovers is lowered.
 // Measured against the PD balance layer (README): stand, pushes and every punch / defence drill are better.
-constexpr double kQpComOmega = 6.0;     // rad/s, com PD natural frequency (critically damped)
+// Com PD natural frequency (critically damped). Walk 60 s seeds 1-12, mean time to the first fall: 4 -> 12.6 s,
+// 6 -> 14.6 s, 9 -> 14.3 s.
+constexpr double kQpComOmega = 6.0;  // rad/s
 constexpr double kQpMomentumDamping = 4.0;  // 1/s
 constexpr double kQpMu = 0.6;           // friction used in the plan (the crates and soles have 0.9)
 // Weight of a touching foot's orientation task (kg m^2 like the bones' servo inertias; the pelvis has 8.3). Measured
@@ -145,6 +150,11 @@ constexpr double kQpTouchGap = 0.002;  // m, a contact closer than this carries 
 constexpr double kQpLand = 0.03;        // m
 constexpr double kQpSupportMargin = 0.03;  // m, see the com target below
 constexpr double kQpMaxComSpeed = 1.0;  // m/s, the desired com velocity's bound
+// Swing foot: weight per kg of foot of its ankle task. At 10 the leg's orientation tasks (aimed from where the
+// pelvis actually is) won and a step_back's foot landed 10-16 cm off its target; at 1000 (with the velocity
+// feed-forward) 6-7 cm. Walk 60 s seeds 1-12: mean first fall 14.6 s (the PD layer: 1.7-6 s on seeds 1-3).
+constexpr double kQpSwingWeight = 1000.0;
+constexpr double kQpMaxSwingSpeed = 3.0;  // m/s, the swing foot's feed-forward velocity bound
 constexpr double kQpMaxComAcc = 6.0;    // m/s^2, the desired com acceleration's bound
 
 void boxer_balance_qp(const eng::physics::Model& m, eng::physics::Data& d, const eng::assets::CharacterDesc& desc,
@@ -250,11 +260,18 @@ void boxer_balance_qp(const eng::physics::Model& m, eng::physics::Data& d, const
       const Eigen::Vector3d v = d.v_body[fb].tail<3>() + d.v_body[fb].head<3>().cross(t.point);
       // A planted-but-hovering foot aims kQpLand below where it is (it comes down onto the crate).
       const Eigen::Vector3d target = loaded[k] ? Eigen::Vector3d(t.point - Eigen::Vector3d(0, 0, kQpLand)) : Pd[feet[k]];
-      t.acc = kp * (target - t.point) - kd * v;
-      t.weight = 10.0 * desc.bones[feet[k]].mass;
+      // The clip's ankle velocity as feed-forward (a step's swing moves at 1-2 m/s: PD alone lags ~2 zeta v / wn,
+      // 10-20 cm). Differenced tick to tick; zero on the tick a foot leaves the support.
+      Eigen::Vector3d v_ff = Eigen::Vector3d::Zero();
+      if (!loaded[k] && b.swing_prev[k]) v_ff = (Pd[feet[k]] - b.swing_target_prev[k]) / dt;
+      if (v_ff.norm() > kQpMaxSwingSpeed) v_ff *= kQpMaxSwingSpeed / v_ff.norm();
+      b.swing_target_prev[k] = Pd[feet[k]];
+      t.acc = kp * (target - t.point) + kd * ((loaded[k] ? Eigen::Vector3d::Zero() : v_ff) - v);
+      t.weight = kQpSwingWeight * desc.bones[feet[k]].mass;
       in.points.push_back(t);
     }
   }
+  for (int k = 0; k < 2; ++k) b.swing_prev[k] = !loaded[k] && !touching[k];
   eng::control::balance_qp_solve(m, d, in, b.qp_params, b.qp_ws, b.qp_out);
   for (int k = 0; k < in.dof_end - in.dof_begin; ++k) d.tau[in.dof_begin + k] = k < 6 ? 0.0 : b.qp_out.tau[k];
 }
@@ -287,6 +304,21 @@ void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const en
       swing[k] = gap > kSwingLift;
       clip_ankle_h[k] = P0[feet[k]].z() - gap;
     }
+  }
+  if (b.balance_qp && d.time > 0.0) {
+    // The clip's floor: the lower of the crate tops under the two feet where they actually are, low-passed
+    // (kBaseTau) so a swing foot passing over another crate does not jerk the desired root up or down. The stance's
+    // crates only hold until the first step: after one the root was placed for crates the feet had left (a leg
+    // over-stretched above a lower crate, or crouched on a higher one).
+    const int feet[2] = {skel.find("foot_l"), skel.find("foot_r")};
+    double lowest = 1e9;
+    for (int f : feet) {
+      const int fb = b.bodies.body[f];
+      const Eigen::Vector3d c = d.x[fb].p + d.x[fb].R * kFootCentre;
+      lowest = std::min(lowest, arena.top_at(c.x(), c.y()));
+    }
+    if (!b.have_support_base) b.support_base = std::min(b.stance.lead_top, b.stance.rear_top), b.have_support_base = true;
+    b.support_base += (1.0 - std::exp(-dt / kBaseTau)) * (lowest - b.support_base);
   }
   place_desired_pose(desc, arena, b, b.desired);
   if (b.limp) return;

@@ -75,6 +75,10 @@ struct Boxer {
   Eigen::Vector3d com_d_rel_last = Eigen::Vector3d::Zero();  // desired com - desired support centre, last tick
   bool have_com_d = false;
   int qp_support_set = 0;
+  bool swing_prev[2] = {false, false};  // balance QP: the foot was swinging last tick (swing feed-forward)
+  Eigen::Vector3d swing_target_prev[2] = {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
+  double support_base = 0.0;  // balance QP: the clip's floor height under the actual feet (low-passed)
+  bool have_support_base = false;
   std::vector<Eigen::Vector2d> qp_pts, qp_hull;  // scratch: contact points on the floor, their hull  // which feet were planted last tick (bit 0 left, bit 1 right)
   double person_heading = 0.0;  // person space: low-passed pelvis heading (boxer_control)
   bool have_person_heading = false;
