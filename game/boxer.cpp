@@ -171,23 +171,37 @@ void boxer_balance_qp(const eng::physics::Model& m, eng::physics::Data& d, const
   for (size_t i = 1; i < m.bodies.size(); ++i)
     if (m.bodies[i].root == pelvis) in.dof_end = std::max(in.dof_end, m.bodies[i].v_index + m.bodies[i].nv);
   const int feet[2] = {skel.find("foot_l"), skel.find("foot_r")};
+  if (b.metrics.fell) {
+    // DOWN: the QP stands a boxer, it does not yet move one lying on the crates (the stand-ups are the match's
+    // work). Its torques on a lying body, its links pressed on the ground, made the limbs flail at 30-80 rad/s and
+    // the simulation diverge within 1-4 s (walk seed 3, even with every ground contact in the plan, accelerations
+    // capped at 200 rad/s^2 or torques at 400 N m). So a fallen boxer goes limp (the passive joint damping stays).
+    for (int k = in.dof_begin; k < in.dof_end; ++k) d.tau[k] = 0.0;
+    return;
+  }
 
   // Contacts of the planted feet. A foot is held (planted) only while it actually touches: a foot the clip plants
   // but that hovers a little above its crate is lowered onto it instead (below).
   bool touching[2] = {false, false};
   for (const auto& c : d.contacts) {
     if (c.point.depth < -kQpTouchGap) continue;  // speculative, not touching
-    for (int k = 0; k < 2; ++k) {
-      const int fb = b.bodies.body[feet[k]];
-      if (!loaded[k] || (c.body_a != fb && c.body_b != fb)) continue;
-      touching[k] = true;
-      eng::control::QpContact qc;
-      qc.body = fb;
-      qc.point = c.point.position;
-      qc.normal = c.body_b == fb ? c.point.normal : Eigen::Vector3d(-c.point.normal);
-      qc.mu = kQpMu;
-      in.contacts.push_back(qc);
-    }
+    if (c.body_a != 0 && c.body_b != 0) continue;  // only the crates and floor (static) carry the body
+    const int body = c.body_a == 0 ? c.body_b : c.body_a;
+    if (m.bodies[body].root != pelvis) continue;
+    int foot = -1;
+    for (int k = 0; k < 2; ++k)
+      if (body == b.bodies.body[feet[k]]) foot = k;
+    // Every other link touching the ground (a knee, a hand, the back of a fallen boxer) is a contact of the plan
+    // too: left out, the plan assumes those links move freely and its torques drive them into the ground (a
+    // fallen boxer's limbs flailed at 30-80 rad/s and the simulation diverged).
+    if (foot >= 0 && !loaded[foot]) continue;  // a swing foot brushing the crate carries nothing
+    if (foot >= 0) touching[foot] = true;
+    eng::control::QpContact qc;
+    qc.body = body;
+    qc.point = c.point.position;
+    qc.normal = c.body_b == body ? c.point.normal : Eigen::Vector3d(-c.point.normal);
+    qc.mu = kQpMu;
+    in.contacts.push_back(qc);
   }
 
   // Desired pose FK (after anchoring / leg fitting): com and feet.
@@ -273,7 +287,11 @@ void boxer_balance_qp(const eng::physics::Model& m, eng::physics::Data& d, const
   }
   for (int k = 0; k < 2; ++k) b.swing_prev[k] = !loaded[k] && !touching[k];
   eng::control::balance_qp_solve(m, d, in, b.qp_params, b.qp_ws, b.qp_out);
-  for (int k = 0; k < in.dof_end - in.dof_begin; ++k) d.tau[in.dof_begin + k] = k < 6 ? 0.0 : b.qp_out.tau[k];
+  // A non-finite solve (never seen standing; a guard) leaves the joints limp for the tick instead of poisoning the
+  // whole simulation.
+  const bool finite = b.qp_out.tau.allFinite();
+  for (int k = 0; k < in.dof_end - in.dof_begin; ++k)
+    d.tau[in.dof_begin + k] = k < 6 || !finite ? 0.0 : b.qp_out.tau[k];
 }
 }  // namespace
 
