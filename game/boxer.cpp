@@ -525,11 +525,15 @@ void boxer_measure(const eng::physics::Model& m, const eng::physics::Data& d, co
   }
   // Tracking error in world orientation, against the desired pose lifted with the desired root.
   eng::control::lift_to_world(skel, b.desired.pose, b.desired.pose.rotation[0], b.W_d_metric);
+  if (mt.err_sq_upright.empty()) mt.err_sq_upright.assign(n, 0.0);
   for (int i = 0; i < n; ++i) {
     const Eigen::Quaterniond Wa(d.x[b.bodies.body[i]].R);
-    mt.err_sq_sum[i] += eng::control::orientation_error(b.W_d_metric[i], Wa).squaredNorm();
+    const double e2 = eng::control::orientation_error(b.W_d_metric[i], Wa).squaredNorm();
+    mt.err_sq_sum[i] += e2;
+    if (!mt.fell) mt.err_sq_upright[i] += e2;
   }
   ++mt.samples;
+  if (!mt.fell) ++mt.samples_upright;
 
   if (!mt.fell) {
     const double t = b.root_torque.norm();

@@ -33,6 +33,8 @@ struct BoxerMetrics {
   double standing_height = 0.0;  // pelvis above its support at the start
   std::vector<double> err_sq_sum;  // per bone, world orientation tracking error^2 (rad^2)
   long samples = 0;
+  std::vector<double> err_sq_upright;  // the same, only the samples before the first fall
+  long samples_upright = 0;
   double ground_contact_time = 0.0;  // continuous time a non-foot, non-shank link touches crates / floor
   Eigen::Vector3d last_com = Eigen::Vector3d::Zero();
   bool have_com = false;

@@ -281,12 +281,15 @@ nlohmann::json world_report(const World& w) {
   nlohmann::json boxers = nlohmann::json::array();
   for (const Boxer& b : w.boxers) {
     const BoxerMetrics& m = b.metrics;
-    nlohmann::json err = nlohmann::json::object();
-    double total = 0;
+    nlohmann::json err = nlohmann::json::object(), err_up = nlohmann::json::object();
+    double total = 0, total_up = 0;
     for (int i = 0; i < w.boxer_desc.skeleton.size() && m.samples > 0; ++i) {
       const double rms = std::sqrt(m.err_sq_sum[i] / m.samples);
       err[w.boxer_desc.skeleton.name[i]] = rms;
       total += m.err_sq_sum[i] / m.samples;
+      if (m.samples_upright == 0) continue;
+      err_up[w.boxer_desc.skeleton.name[i]] = std::sqrt(m.err_sq_upright[i] / m.samples_upright);
+      total_up += m.err_sq_upright[i] / m.samples_upright;
     }
     boxers.push_back({{"index", b.index},
                       {"servo", b.limp ? "limp" : servo_space_name(b.space)},
@@ -304,6 +307,9 @@ nlohmann::json world_report(const World& w) {
                       {"rms_tracking_error_rad", err},
                       {"rms_tracking_error_all_bones_rad",
                        m.samples > 0 ? std::sqrt(total / w.boxer_desc.skeleton.size()) : 0.0},
+                      {"rms_tracking_error_upright_rad", err_up},  // only before the first fall
+                      {"rms_tracking_error_upright_all_bones_rad",
+                       m.samples_upright > 0 ? std::sqrt(total_up / w.boxer_desc.skeleton.size()) : 0.0},
                       {"clips_visited_s", b.source.clip_time()},
                       {"clip_timeline", b.source.timeline()},
                       {"stance_lead_top_m", b.stance.lead_top},
