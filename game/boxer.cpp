@@ -128,7 +128,8 @@ ComAndSupport com_and_support(const eng::physics::Data& d, const eng::assets::Ch
 }
 
 // The balance QP's inputs for one boxer (balance_qp.h), solved, and its joint torques written to d.tau.
-//  * Contacts: the touching contact points (gap < kQpTouchGap) of the feet the clip plants, from the last step.
+//  * Contacts: the touching contact points (gap < kQpTouchGap) with the crates, from the last step: of the feet
+//    the clip plants and of any other link (a knee, a hand).
 //  * Com: PD toward the desired pose's com, measured against the support (desired com - desired feet centre,
 //    put on the actual feet centre), with the clip's com velocity over its feet as feed-forward: Kudoh's com
 //    acceleration as a PD target (thesis sec. 2.5.1). The target is clamped into the contacts' support polygon.
@@ -137,14 +138,15 @@ ComAndSupport com_and_support(const eng::physics::Data& d, const eng::assets::Ch
 //    weighted by the bone's servo inertia (heavy subtrees matter most, as eq. 3's gains scale with them).
 //  * Touching feet: their contact points held (balance_qp.h) and a strong orientation task (clip's tilt, own
 //    heading); swing feet: the ankle toward the desired ankle (PD); a planted foot that hovers is lowered.
-// Measured against the PD balance layer (README): stand, pushes and every punch / defence drill are better.
+// Measured against the PD balance layer (README): stand and 150 N pushes as good, larger pushes, every punch and
+// defence drill, tracking and the walk better.
 // Com PD natural frequency (critically damped). Walk 60 s seeds 1-12, mean time to the first fall: 4 -> 12.6 s,
 // 6 -> 14.6 s, 9 -> 14.3 s.
 constexpr double kQpComOmega = 6.0;  // rad/s
 constexpr double kQpMomentumDamping = 4.0;  // 1/s
 constexpr double kQpMu = 0.6;           // friction used in the plan (the crates and soles have 0.9)
 // Weight of a touching foot's orientation task (kg m^2 like the bones' servo inertias; the pelvis has 8.3). Measured
-// (walk 40 s, seeds 1-6): 1 / 10 / 50 / 500 -> first falls at 6.9-24 / 8.0-21 / 7.5-23 / 5.9-22 s: a weak choice.
+// (walk 40 s, seeds 1-6): 1 / 10 / 50 / 500 -> first falls at 6.9-24 / 8.0-21 / 7.5-23 / 5.9-22 s: little effect.
 constexpr double kQpPlantedFootWeight = 50.0;
 constexpr double kQpTouchGap = 0.002;  // m, a contact closer than this carries load in the plan
 constexpr double kQpLand = 0.03;        // m
@@ -191,9 +193,8 @@ void boxer_balance_qp(const eng::physics::Model& m, eng::physics::Data& d, const
     int foot = -1;
     for (int k = 0; k < 2; ++k)
       if (body == b.bodies.body[feet[k]]) foot = k;
-    // Every other link touching the ground (a knee, a hand, the back of a fallen boxer) is a contact of the plan
-    // too: left out, the plan assumes those links move freely and its torques drive them into the ground (a
-    // fallen boxer's limbs flailed at 30-80 rad/s and the simulation diverged).
+    // Every other link touching the ground (a knee, a hand) is a contact of the plan too: left out, the plan
+    // would assume that link moves freely and push it into the crate.
     if (foot >= 0 && !loaded[foot]) continue;  // a swing foot brushing the crate carries nothing
     if (foot >= 0) touching[foot] = true;
     eng::control::QpContact qc;
@@ -457,7 +458,7 @@ void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const en
   }
   eng::control::control_step(skel, b.space, b.gains, b.control_body, b.hook, b.desired, heading, dt, actual, b.servo,
                              help);
-  if (b.balance_qp) {
+  if (b.balance_qp) {  // the QP writes every joint torque; the root spring below belongs to --balance pd
     boxer_balance_qp(m, d, desc, b, loaded, dt);
     return;
   }
