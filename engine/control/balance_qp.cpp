@@ -1,5 +1,6 @@
-// Balance QP (see balance_qp.h): stage 1 ground reaction (non-negative least squares over the friction-pyramid
-// edges), stage 2 accelerations (equality-constrained least squares through its KKT system), then the torques.
+// Balance QP (see balance_qp.h): the tracking objective and the contact forces' generalised forces, qacc as an
+// affine function of the friction-pyramid weights (KKT system), the non-negative least squares in those weights,
+// then the torques.
 #include "engine/control/balance_qp.h"
 
 #include <Eigen/LU>
@@ -149,10 +150,10 @@ void balance_qp_solve(const physics::Model& m, const physics::Data& d, const Bal
   }
 
   // ---- Contact forces: pyramid edges u (f_c = sum beta u, beta >= 0), their wrench about the com (A) and
-  // their generalised force on the root DoFs (F = J_root^T u) ----
+  // their generalised force over the block (G = J_c^T u; its root rows enter the Newton-Euler equality) ----
   ws.basis.resize(K);
   ws.A.setZero(6, K);
-  ws.F.setZero(6, K);
+  ws.G.resize(n, K);
   for (int c = 0; c < nc; ++c) {
     const QpContact& ct = in.contacts[c];
     const Vec3 nrm = ct.normal.normalized();
@@ -164,7 +165,7 @@ void balance_qp_solve(const physics::Model& m, const physics::Data& d, const Bal
       ws.basis[4 * c + k] = u[k];
       ws.A.block<3, 1>(0, 4 * c + k) = std::sqrt(p.w_force) * u[k];
       ws.A.block<3, 1>(3, 4 * c + k) = std::sqrt(p.w_moment) * r.cross(u[k]);
-      ws.F.col(4 * c + k) = ws.J.bottomLeftCorner<3, 6>().transpose() * u[k];
+      ws.G.col(4 * c + k).noalias() = ws.J.bottomRows<3>().transpose() * u[k];
     }
   }
 
@@ -183,7 +184,7 @@ void balance_qp_solve(const physics::Model& m, const physics::Data& d, const Bal
   ws.rhs.setZero(n + 6, K + 1);
   ws.rhs.col(0).head(n) = ws.g;
   ws.rhs.col(0).tail<6>() = -c_root;
-  ws.rhs.bottomRightCorner(6, K) = ws.F;
+  ws.rhs.bottomRightCorner(6, K) = ws.G.topRows(6);
   ws.sol = ws.lu.solve(ws.rhs);
   const auto q0 = ws.sol.col(0).head(n);
   const auto Q1 = ws.sol.topRightCorner(n, K);
@@ -191,7 +192,6 @@ void balance_qp_solve(const physics::Model& m, const physics::Data& d, const Bal
   // ---- The reduced problem in beta: tracking cost at qacc(beta) plus the wrench terms, beta >= 0 ----
   //   1/2 beta^T (Q1^T H Q1 + A^T A + ridge) beta - (A^T b - Q1^T (H q0 - g))^T beta
   const Vec3 F_des = mass * (in.com_acc - m.gravity);
-  ws.b.resize(6);
   ws.b.head<3>() = std::sqrt(p.w_force) * F_des;
   ws.b.tail<3>() = std::sqrt(p.w_moment) * in.momentum_rate;
   ws.beta.setZero(K);
@@ -230,16 +230,12 @@ void balance_qp_solve(const physics::Model& m, const physics::Data& d, const Bal
 
   // ---- Torques: tau = M qacc + c - J^T f (plus the passive terms the step adds: armature on M's diagonal,
   // joint damping -D v, integrated implicitly by the step and taken here at the current v) ----
-  ws.JtF.setZero(n);
-  for (int c = 0; c < nc; ++c) {
-    block_jacobian(m, d, in.contacts[c].body, in.contacts[c].point, b0, n, ws.J);
-    ws.JtF.noalias() += ws.J.bottomRows<3>().transpose() * out.contact_force[c];
-  }
   out.tau.noalias() = M * out.qacc;
+  if (K > 0) out.tau.noalias() -= ws.G * ws.beta;  // - J^T f
   for (int k = 0; k < n; ++k) {
     const int dof = b0 + k;
     const auto& body = m.bodies[m.dof_body[dof]];
-    out.tau[k] += body.armature * out.qacc[k] + ws.c_full[dof] + body.damping * d.v[dof] - ws.JtF[k];
+    out.tau[k] += body.armature * out.qacc[k] + ws.c_full[dof] + body.damping * d.v[dof];
   }
   out.root_residual = out.tau.head<6>().norm();
 }

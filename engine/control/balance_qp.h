@@ -10,25 +10,24 @@
 // (thesis sec. 2.5: centre-of-mass acceleration as PD toward its target, ZMP kept in the support area, joint
 // accelerations as the unknowns): find the accelerations the ground CAN support, closest to the desired ones.
 //
-// FORMULATION (two stages, as Lee & Goswami's momentum-based balance control: admissible ground reaction
-// first, then the accelerations that realise it; each stage is a small least-squares problem):
-//  1. Ground reaction. Each contact point c (normal n_c on the body, friction mu) carries
+// FORMULATION (one QP). Unknowns: qacc and, per contact point c (normal n_c on the body, friction mu),
 //       f_c = sum_k beta_ck u_ck, beta >= 0,  u_ck = n_c +- mu t1_c, n_c +- mu t2_c   (inner friction pyramid)
-//     so any beta >= 0 is a force inside the cone and the centre of pressure inside the contact points' hull:
-//     Kudoh's ZMP constraint (2.39) for any polygon. beta minimises
-//       w_F |sum f_c - F_des|^2 + w_N |sum (p_c - com) x f_c - N_des|^2 + eps |beta|^2
-//     with F_des = m (a_com_des - g) (Kudoh: the com acceleration as a PD target) and N_des the desired rate of
-//     the centroidal angular momentum. A non-negative least-squares problem, solved exactly by Lawson & Hanson's active set.
-//  2. Accelerations. With the reaction f fixed, qacc minimises the weighted task errors
-//       sum_i w_i |J_i qacc + Jdot_i v - a_i|^2 + eps |qacc|^2
-//     (a_i: each bone's desired world angular acceleration -- the inertial servo's eq. 3 as an acceleration --,
-//     point accelerations, e.g. a swing foot, and, heavily weighted, zero acceleration of every contact point)
-//     subject to, exactly,
-//       M_root qacc + c_root = (J^T f)_root      (Newton-Euler of the whole body: the floating base is unactuated)
-//     solved through its KKT system. Then tau = M qacc + c - J^T f; its root rows vanish by construction.
-// Where the desired com acceleration is not admissible, stage 1 returns the closest reaction inside the cones,
-// stage 2 makes the whole body consistent with it (arms and trunk take up the angular momentum: Kudoh's arm
-// swing and waist bend emerge), and the torques never ask the feet to pull or slide.
+// so any beta >= 0 is a force inside the cone and the centre of pressure inside the contact points' hull:
+// Kudoh's ZMP constraint (2.39) for any polygon. Minimise
+//       sum_i w_i |J_i qacc + Jdot_i v - a_i|^2 + eps |qacc|^2                      (tracking)
+//     + w_F |sum f_c - F_des|^2 + w_N |sum (p_c - com) x f_c - N_des|^2 + eps' |beta|^2   (ground reaction)
+// (a_i: each bone's desired world angular acceleration -- the inertial servo's eq. 3 as an acceleration --,
+// point accelerations, e.g. a swing foot, and, heavily weighted, zero acceleration of every contact point;
+// F_des = m (a_com_des - g), Kudoh's com acceleration as a PD target; N_des the desired rate of the centroidal
+// angular momentum) subject to, exactly,
+//       M_root qacc + c_root = (J^T f)_root      (Newton-Euler of the whole body: the floating base is unactuated).
+// SOLVE. For a given beta the best qacc solves the equality-constrained least squares through its KKT system,
+// so qacc = q0 + Q1 beta (one LU, K + 1 right-hand sides). Substituted back, the problem in beta alone is a
+// non-negative least squares, solved exactly by Lawson & Hanson's active set. Then tau = M qacc + c - J^T f; its
+// root rows vanish by construction. Where the desired com acceleration is not admissible the solution trades it
+// against tracking inside the cones (arms and trunk take up the angular momentum: Kudoh's arm swing and waist
+// bend), and the torques never ask the feet to pull or slide. (Two stages -- reaction first, accelerations
+// after, as Lee & Goswami -- was tried first: the reaction, chosen blind to tracking, made the arms flail.)
 //
 // All quantities world frame; the articulation is a contiguous DoF block [dof_begin, dof_end) whose first six
 // DoFs are the free root joint. Uses forward_kinematics results (x, com_world, v_body, cdof, cdof_dot).
@@ -81,11 +80,11 @@ struct BalanceQpInput {
 };
 
 struct BalanceQpParams {
-  double w_force = 1.0;     // stage 1 weight on the net force error (per N^2)
-  double w_moment = 1.0;    // stage 1 weight on the moment error (per (N m)^2)
-  double reg_beta = 1e-6;   // stage 1 Tikhonov term relative to the mean diagonal (spreads the load)
-  double reg_qacc = 1e-4;   // stage 2 damping of qacc (per (unit acceleration)^2), keeps the KKT system regular
-  double w_hold = 1e4;      // stage 2 weight of "contact points do not accelerate" (per (m/s^2)^2)
+  double w_force = 1.0;     // weight on the net ground force error (per N^2)
+  double w_moment = 1.0;    // weight on the ground moment error about the com (per (N m)^2)
+  double reg_beta = 1e-6;   // ridge on beta relative to the reduced problem's mean diagonal (spreads the load)
+  double reg_qacc = 1e-4;   // damping of qacc (per (unit acceleration)^2), keeps the KKT system regular
+  double w_hold = 1e4;      // weight of "contact points do not accelerate" (per (m/s^2)^2)
   double hold_damping = 20.0;  // 1/s: the held points' target acceleration is -hold_damping * their velocity
 };
 
@@ -95,16 +94,17 @@ struct BalanceQpResult {
   Vec3 moment = Vec3::Zero();  // planned moment about the com (N m)
   Vec3 cop = Vec3::Zero();     // planned centre of pressure (force-weighted contact point; com if no force)
   std::vector<Vec3> contact_force;  // per input contact
-  double root_residual = 0.0;  // |tau_root| (N, N m): how exactly stage 2 met the Newton-Euler rows
+  double root_residual = 0.0;  // |tau_root| (N, N m): how exactly the solve met the Newton-Euler rows
 };
 
-// Workspace (sized on first use, reused: no allocation per call once warm).
+// Workspace (sized on first use and reused; Eigen reallocates when the number of contacts changes).
 struct BalanceQp {
-  MatX M_full, J, KKT, A, F, Q, rhs, sol, HQ1;
-  VecX c_full, beta, b, q, g, JtF;
+  MatX M_full, J, KKT, A, G, Q, rhs, sol, HQ1;  // G: generalised force of each pyramid edge (J_c^T u), n x K
+  VecX c_full, beta, q, g;
+  Eigen::Matrix<double, 6, 1> b;
   Eigen::PartialPivLU<MatX> lu;
   std::vector<Vec3> basis;
-  // stage 1 active-set NNLS
+  // the active-set NNLS in beta
   std::vector<int> passive;
   std::vector<char> in_passive;
   MatX Qpp;
