@@ -9,6 +9,7 @@
 #include "engine/control/world_pose.h"
 #include "engine/physics/dynamics.h"
 #include "engine/physics/step.h"
+#include "game/foothold.h"
 
 namespace boxing {
 
@@ -33,6 +34,20 @@ constexpr double kClipForward = 0.05;  // m, see place_desired_pose
 constexpr double kRearRise = 0.75;  // see place_desired_pose
 constexpr double kMaxRise = 0.09;  // m
 constexpr double kBaseTau = 0.3;   // s, see boxer_control (the clip's floor under the actual feet)
+// Balance QP: the boxer's stance and steps, measured on the graph walk (60 s, seeds 1-24, mean / median time to the
+// first fall, README) and the stand (60 s, seeds 1-20, both boxers, world / person space):
+//  * kQpStanceDrop: the desired root this much lower than the clip's, the legs fitted to the crates (knees bent
+//    deeper). On a stance with the lead crate 16 cm higher the rear knee stood at 0.23 rad against the clip's 0.47
+//    (leg nearly straight, heel lifting, no range left to move the com).
+//  * kQpSwingPress: a stepping ankle aimed this much below the clip's, so the sole slides along its crate (a boxer's
+//    shuffle) instead of lifting: the body is never on one foot alone. Not when stepping up onto a higher crate.
+// Neither alone helps the walk: drop 0.08 -> 14.8 / 10.7 s, press 0.08 -> 8.4 / 7.3 s, none -> 12.4 / 8.7 s. With
+// press 0.10: drop 0.04 -> 23.6 / 16.2 s, 0.06 -> 27.0 / 22.1 s, 0.10 -> 30.4 / 29.0 s; but the deeper stances cost
+// the stand: 0.06 -> person 39/40, 0.10 -> world 39/40, person 34/40 (falls at 44-60 s: a planted foot's yaw creeps,
+// the rear foot 79 deg off at the fall); 0.04 -> 40/40, 40/40.
+constexpr double kQpStanceDrop = 0.04;  // m
+constexpr double kQpSwingPress = 0.10;  // m
+constexpr double kStepUpTolerance = 0.01;  // m, a landing crate higher than the start's by more is a step up
 const Eigen::Vector3d kFootCentre(0.05, 0.0, 0.0);  // middle of the sole in the foot frame (content: foot box)
 constexpr double kSwingLift = 0.015;  // m, see boxer_control
 // A planted ankle standing more than this above its sole's lowest end than the clip's is pressed back down (m).
@@ -81,7 +96,9 @@ void place_desired_pose(const eng::assets::CharacterDesc& desc, const Arena& are
   // lead heel hangs ~1 cm over the seam onto the rear foot's crate, and when that crate is the higher one the heel
   // sits against its side (every seed that fell at HEAD had the rear crate higher). kClipForward moves the clip
   // along the heading so both soles lie inside their own crates (lead heel ~4 cm clear of the seam).
-  out.pose.root_position = Eigen::Vector3d(b.stance.position.x(), b.stance.position.y(), base) +
+  // Balance QP: the stance kQpStanceDrop deeper than the clip's (below).
+  const double drop = b.balance_qp ? kQpStanceDrop : 0.0;
+  out.pose.root_position = Eigen::Vector3d(b.stance.position.x(), b.stance.position.y(), base - drop) +
                            yaw * (out.pose.root_position + Eigen::Vector3d(kClipForward, 0.0, 0.0));
   out.pose.root_position.head<2>() += b.anchor;
   out.pose.rotation[0] = yaw * out.pose.rotation[0];
@@ -90,7 +107,7 @@ void place_desired_pose(const eng::assets::CharacterDesc& desc, const Arena& are
   const auto& s = desc.skeleton;
   const LegBones legs[2] = {{s.find("thigh_l"), s.find("shank_l"), s.find("foot_l")},
                             {s.find("thigh_r"), s.find("shank_r"), s.find("foot_r")}};
-  fit_legs_to_ground(s, legs, base, [&](double x, double y) { return arena.top_at(x, y); }, out.pose);
+  fit_legs_to_ground(s, legs, base - drop, [&](double x, double y) { return arena.top_at(x, y); }, out.pose);
 }
 
 namespace {
@@ -158,6 +175,11 @@ constexpr double kQpMaxComSpeed = 1.0;  // m/s, the desired com velocity's bound
 constexpr double kQpSwingWeight = 1000.0;
 constexpr double kQpMaxSwingSpeed = 3.0;  // m/s, the swing foot's feed-forward velocity bound
 constexpr double kQpMaxComAcc = 6.0;    // m/s^2, the desired com acceleration's bound
+
+// The clip's sole above its floor: the lower of the heel's and toe's heights (clip floor frame, z = 0 is the floor).
+double clip_sole_gap(const std::vector<Eigen::Quaterniond>& W, const std::vector<Eigen::Vector3d>& P, int foot) {
+  return std::min((P[foot] + W[foot] * kSoleHeel).z(), (P[foot] + W[foot] * kSoleToe).z());
+}
 
 void boxer_balance_qp(const eng::physics::Model& m, eng::physics::Data& d, const eng::assets::CharacterDesc& desc,
                       Boxer& b, const bool loaded[2], double dt) {
@@ -274,13 +296,18 @@ void boxer_balance_qp(const eng::physics::Model& m, eng::physics::Data& d, const
       t.point = d.x[fb].p;
       const Eigen::Vector3d v = d.v_body[fb].tail<3>() + d.v_body[fb].head<3>().cross(t.point);
       // A planted-but-hovering foot aims kQpLand below where it is (it comes down onto the crate).
-      const Eigen::Vector3d target = loaded[k] ? Eigen::Vector3d(t.point - Eigen::Vector3d(0, 0, kQpLand)) : Pd[feet[k]];
-      // The clip's ankle velocity as feed-forward (a step's swing moves at 1-2 m/s: PD alone lags ~2 zeta v / wn,
-      // 10-20 cm). Differenced tick to tick; zero on the tick a foot leaves the support.
+      // A swing foot aims at its step's target (plan_steps: the clip's ankle, moved onto a good foothold).
+      const Boxer::StepPlan& step = b.step[k];
+      const Eigen::Vector3d swing_target = step.active ? step.target : Pd[feet[k]];
+      const Eigen::Vector3d target = loaded[k] ? Eigen::Vector3d(t.point - Eigen::Vector3d(0, 0, kQpLand)) : swing_target;
+      // The target's velocity as feed-forward (a step's swing moves at 1-2 m/s: PD alone lags ~2 zeta v / wn,
+      // 10-20 cm). Differenced tick to tick, the height from the clip's own (the crate under the foot changes in
+      // jumps); zero on the tick a foot leaves the support.
+      const Eigen::Vector3d ff_point(swing_target.x(), swing_target.y(), step.active ? step.clip_z : swing_target.z());
       Eigen::Vector3d v_ff = Eigen::Vector3d::Zero();
-      if (!loaded[k] && b.swing_prev[k]) v_ff = (Pd[feet[k]] - b.swing_target_prev[k]) / dt;
+      if (!loaded[k] && b.swing_prev[k]) v_ff = (ff_point - b.swing_target_prev[k]) / dt;
       if (v_ff.norm() > kQpMaxSwingSpeed) v_ff *= kQpMaxSwingSpeed / v_ff.norm();
-      b.swing_target_prev[k] = Pd[feet[k]];
+      b.swing_target_prev[k] = ff_point;
       t.acc = kp * (target - t.point) + kd * ((loaded[k] ? Eigen::Vector3d::Zero() : v_ff) - v);
       t.weight = kQpSwingWeight * desc.bones[feet[k]].mass;
       in.points.push_back(t);
@@ -293,6 +320,66 @@ void boxer_balance_qp(const eng::physics::Model& m, eng::physics::Data& d, const
   const bool finite = b.qp_out.tau.allFinite();
   for (int k = 0; k < in.dof_end - in.dof_begin; ++k)
     d.tau[in.dof_begin + k] = k < 6 || !finite ? 0.0 : b.qp_out.tau[k];
+}
+
+constexpr double kStepLookahead = 0.8;  // s, how far ahead plan_steps looks for the swing foot's landing
+
+// STEPS ON THE CRATES (balance QP). When the clip lifts a foot, look ahead in the clip for where it puts it down
+// (the first frame whose sole is back within kSwingLift of the floor), place that landing on the crates the way the
+// current pose is placed (same heading, anchor), and find the smallest shift that lands the sole flat on one crate
+// (foothold.h). During the swing the ankle target is the clip's, plus the shift eased in over the swing (C1 ease,
+// complete at the clip's touch-down), at the clip's lift above the highest of the crates under the foot, under the
+// shifted target and at the landing (the toe clears a higher crate's edge before it gets there).
+void plan_steps(const eng::physics::Data& d, const eng::assets::CharacterDesc& desc, const Arena& arena, Boxer& b,
+                const bool swing[2], double dt) {
+  const auto& skel = desc.skeleton;
+  const int feet[2] = {skel.find("foot_l"), skel.find("foot_r")};
+  std::vector<Eigen::Quaterniond>& W = b.fk_W;
+  std::vector<Eigen::Vector3d>& P = b.fk_P;
+  const Eigen::Rotation2Dd heading(b.stance.heading);
+  for (int k = 0; k < 2; ++k) {
+    Boxer::StepPlan& st = b.step[k];
+    if (!swing[k]) {
+      st.active = false;
+      continue;
+    }
+    if (!st.active) {
+      pose_fk(skel, b.source.preview(0.0), W, P);
+      const Eigen::Vector2d now_clip = P[feet[k]].head<2>();
+      double ahead = 0.0;
+      Eigen::Vector2d land_clip = now_clip;
+      double land_yaw = 0.0;
+      for (int i = 1; i * (1.0 / 60.0) <= kStepLookahead; ++i) {
+        ahead = i / 60.0;
+        pose_fk(skel, b.source.preview(ahead), W, P);
+        land_clip = P[feet[k]].head<2>();
+        land_yaw = eng::control::heading_of(W[feet[k]]);
+        if (clip_sole_gap(W, P, feet[k]) <= kSwingLift) break;
+      }
+      pose_fk(skel, b.desired.pose, W, P);  // the placed pose of this tick
+      st.active = true;
+      st.elapsed = 0.0;
+      st.duration = std::max(ahead, dt);
+      st.landing = P[feet[k]].head<2>() + heading * (land_clip - now_clip);
+      const Foothold fh = find_foothold(arena, st.landing, b.stance.heading + land_yaw, b.stance.heading);
+      st.shift = fh.shift;
+      const int fb = b.bodies.body[feet[k]];
+      const Eigen::Vector3d from = d.x[fb].p + d.x[fb].R * kFootCentre;
+      const Eigen::Vector2d to = st.landing + st.shift + Eigen::Rotation2Dd(b.stance.heading + land_yaw) * kFootCentre.head<2>();
+      st.step_up = arena.top_at(to.x(), to.y()) > arena.top_at(from.x(), from.y()) + kStepUpTolerance;
+    }
+    st.elapsed += dt;
+    pose_fk(skel, b.desired.pose, W, P);
+    const double u = std::clamp(st.elapsed / st.duration, 0.0, 1.0);
+    const Eigen::Vector2d s = (3.0 * u * u - 2.0 * u * u * u) * st.shift;
+    const Eigen::Vector3d mid = P[feet[k]] + W[feet[k]] * kFootCentre;
+    st.clip_z = P[feet[k]].z() - arena.top_at(mid.x(), mid.y());  // the fit put the ankle over the crate under mid
+    const Eigen::Vector2d land_mid = st.landing + st.shift + (mid - P[feet[k]]).head<2>();
+    const double top = std::max(arena.top_at(mid.x() + s.x(), mid.y() + s.y()), arena.top_at(land_mid.x(), land_mid.y()));
+    // The shuffle: the sole stays pressed to its crate (below), except up onto a higher crate (it has to clear the edge).
+    const double press = st.step_up ? 0.0 : kQpSwingPress;
+    st.target = Eigen::Vector3d(P[feet[k]].x() + s.x(), P[feet[k]].y() + s.y(), st.clip_z + top - press);
+  }
 }
 }  // namespace
 
@@ -319,7 +406,7 @@ void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const en
     pose_fk(desc.skeleton, b.desired.pose, W0, P0);
     const int feet[2] = {desc.skeleton.find("foot_l"), desc.skeleton.find("foot_r")};
     for (int k = 0; k < 2; ++k) {
-      const double gap = std::min((P0[feet[k]] + W0[feet[k]] * kSoleHeel).z(), (P0[feet[k]] + W0[feet[k]] * kSoleToe).z());
+      const double gap = clip_sole_gap(W0, P0, feet[k]);
       swing[k] = gap > kSwingLift;
       clip_ankle_h[k] = P0[feet[k]].z() - gap;
     }
@@ -340,6 +427,7 @@ void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const en
     b.support_base += (1.0 - std::exp(-dt / kBaseTau)) * (lowest - b.support_base);
   }
   place_desired_pose(desc, arena, b, b.desired);
+  if (b.balance_qp) plan_steps(d, desc, arena, b, swing, dt);
   if (b.limp) return;
   const bool parent_space = b.space == ServoSpace::Parent || b.space == ServoSpace::ParentMeathook;
   bool loaded[2] = {d.time == 0.0, d.time == 0.0};  // placed on the crates: planted at the start
@@ -400,6 +488,8 @@ void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const en
       // its toes (seed 1's rear foot after a cross: heel 40 deg up, no load, for seconds) is pressed back down flat
       // instead of being held there; a flat foot is aimed exactly where it is.
       ankles[k] = P[legs[k].foot];
+      // A stepping leg aims at its step's target (the bones' orientation tasks then agree with the ankle's).
+      if (!loaded[k] && b.step[k].active) ankles[k] = b.step[k].target;
       if (loaded[k]) {
         const int fb = b.bodies.body[legs[k].foot];
         const Eigen::Vector3d a = d.x[fb].p;

@@ -76,12 +76,24 @@ struct Boxer {
   eng::control::BalanceQpResult qp_out;
   Eigen::Vector3d com_d_rel_last = Eigen::Vector3d::Zero();  // desired com - desired support centre, last tick
   bool have_com_d = false;
-  int qp_support_set = 0;
+  int qp_support_set = 0;  // which feet were planted last tick (bit 0 left, bit 1 right)
   bool swing_prev[2] = {false, false};  // balance QP: the foot was swinging last tick (swing feed-forward)
   Eigen::Vector3d swing_target_prev[2] = {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
+  // Balance QP: the step each foot is taking (boxer_control's plan_steps): where the clip will put it down (world
+  // x, y of the ankle), the foothold shift that lands it flat on one crate (foothold.h), the swing's timing, and this
+  // tick's ankle target (world) and its clip-floor height (for the feed-forward).
+  struct StepPlan {
+    bool active = false;
+    Eigen::Vector2d landing = Eigen::Vector2d::Zero(), shift = Eigen::Vector2d::Zero();
+    double duration = 0.0, elapsed = 0.0;
+    Eigen::Vector3d target = Eigen::Vector3d::Zero();
+    double clip_z = 0.0;
+    bool step_up = false;  // the landing crate is higher than the one the foot leaves (no shuffle, it lifts over)
+  };
+  StepPlan step[2];
   double support_base = 0.0;  // balance QP: the clip's floor height under the actual feet (low-passed)
   bool have_support_base = false;
-  std::vector<Eigen::Vector2d> qp_pts, qp_hull;  // scratch: contact points on the floor, their hull  // which feet were planted last tick (bit 0 left, bit 1 right)
+  std::vector<Eigen::Vector2d> qp_pts, qp_hull;  // scratch: contact points on the floor, their hull
   double person_heading = 0.0;  // person space: low-passed pelvis heading (boxer_control)
   bool have_person_heading = false;
   double plant_yaw[2] = {0, 0};

@@ -30,7 +30,22 @@ const std::string& PoseSource::current_clip() const {
   return drill_ && drill_start_ >= 0.0 ? drill_->name : clip_->name;
 }
 
+eng::anim::Pose PoseSource::preview(double ahead) const {
+  if (walker_) return walker_->preview(ahead);
+  const double t = now_ - last_dt_ + ahead;  // tick() sampled the clips at now_ - dt
+  if (drill_ && drill_start_ >= 0.0) {
+    eng::anim::Pose p = eng::anim::sample_clip_pose(*drill_, std::min(t - drill_start_, drill_->duration()));
+    p.root_position += drill_offset_;
+    return p;
+  }
+  // Looping guard (t_ has advanced past the sampled time already).
+  eng::anim::Pose p = eng::anim::sample_clip_pose(*clip_, t_ - last_dt_ + ahead);
+  p.root_position += drill_offset_;
+  return p;
+}
+
 eng::anim::PoseSample PoseSource::tick(double dt, const Eigen::Vector2d& anchor) {
+  last_dt_ = dt;
   clip_time_[current_clip()] += dt;
   if (timeline_.empty() || timeline_.back().second != current_clip()) timeline_.emplace_back(now_, current_clip());
   now_ += dt;

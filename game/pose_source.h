@@ -26,6 +26,9 @@ class PoseSource {
   // (plus `anchor`, the offset at which the boxer places the walk, in the clip frame) has drifted more than
   // `leash` metres along its heading, it asks the graph for a step back / forward.
   eng::anim::PoseSample tick(double dt, const Eigen::Vector2d& anchor = Eigen::Vector2d::Zero());
+  // The source's pose (clip floor frame, like tick's) `ahead` seconds after the last tick, staying in the clip now
+  // playing (a walk's next transition is not known yet). preview(0) is the last tick's pose.
+  eng::anim::Pose preview(double ahead) const;
   const std::string& current_clip() const;
   bool is_walk() const { return walker_ != nullptr; }
   eng::anim::GraphWalker* walker() { return walker_.get(); }
@@ -44,6 +47,7 @@ class PoseSource {
   std::map<std::string, double> clip_time_;
   std::vector<std::pair<double, std::string>> timeline_;
   double now_ = 0.0;
+  double last_dt_ = 0.0;
   double leash_ = 0.25;
 };
 

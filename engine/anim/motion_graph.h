@@ -124,6 +124,9 @@ class GraphWalker {
   // (fall_back -> down_back -> getup_back -> guard). Returns false for an unknown clip.
   bool force_clip(const std::string& name);
 
+  // The walk's world pose `ahead` seconds after the last tick, were it to stay in the current clip (and blend): the
+  // next transition is not drawn yet, so time stops at the clip's end. Look-ahead, e.g. where a step will land.
+  Pose preview(double ahead) const { return world_pose_at(ahead); }
   const std::string& current_clip() const;
   int current_node() const { return g_->node(clip_, frame_); }
   bool blending() const { return blend_.active; }

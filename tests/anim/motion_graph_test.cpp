@@ -299,3 +299,27 @@ TEST(GraphWalker, HitReactionFromMidPunchReturnsToGuard) {
   EXPECT_TRUE(back);
   EXPECT_FALSE(w.force_clip("no_such_clip"));
 }
+
+TEST(GraphWalker, PreviewIsTheNextTicksPoseWhileTheWalkStaysInItsClip) {
+  // preview(0) is the pose tick() returned; preview(dt) is the next tick's pose unless the next tick crosses a frame
+  // where the walk decides (a transition, a clip's end): those ticks are skipped.
+  const MotionGraph& g = graph();
+  GraphWalker w(g, 77);
+  const double dt = 1.0 / 240;
+  PoseSample s = w.tick(dt);
+  int compared = 0;
+  for (int i = 0; i < 240 * 20; ++i) {
+    const Pose now = w.preview(0.0), next = w.preview(dt);
+    ASSERT_LT((now.root_position - s.pose.root_position).norm(), 1e-12);
+    const int node = w.current_node();
+    const bool blending = w.blending();
+    s = w.tick(dt);
+    if (w.current_node() != node && !blending) continue;  // a frame boundary: the walk may have jumped
+    if (w.blending() != blending) continue;
+    double err = (next.root_position - s.pose.root_position).norm();
+    for (int b = 0; b < 16; ++b) err = std::max(err, next.rotation[b].angularDistance(s.pose.rotation[b]));
+    EXPECT_LT(err, 1e-9) << "tick " << i;
+    ++compared;
+  }
+  EXPECT_GT(compared, 240 * 10);
+}
