@@ -154,7 +154,7 @@ ComAndSupport com_and_support(const eng::physics::Data& d, const eng::assets::Ch
 //  * Every bone: eq. 3 as an acceleration, alpha = omega_n^2 Delta(W_d, W_a) + 2 zeta omega_n (omega_d - omega_a),
 //    weighted by the bone's servo inertia (heavy subtrees matter most, as eq. 3's gains scale with them).
 //  * Touching feet: their contact points held (balance_qp.h) and a strong orientation task (clip's tilt, own
-//    heading); swing feet: the ankle toward the desired ankle (PD); a planted foot that hovers is lowered.
+//    heading); swing feet: the ankle toward its step's target (PD, plan_steps); a planted foot that hovers is lowered.
 // Measured against the PD balance layer (README): stand and 150 N pushes as good, larger pushes, every punch and
 // defence drill, tracking and the walk better.
 // Com PD natural frequency (critically damped). Walk 60 s seeds 1-12, mean time to the first fall: 4 -> 12.6 s,
