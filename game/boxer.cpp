@@ -336,40 +336,43 @@ void plan_steps(const eng::physics::Data& d, const eng::assets::CharacterDesc& d
   const int feet[2] = {skel.find("foot_l"), skel.find("foot_r")};
   std::vector<Eigen::Quaterniond>& W = b.fk_W;
   std::vector<Eigen::Vector3d>& P = b.fk_P;
+  // A foot the clip just lifted: where (clip floor frame) and when the clip puts it down again.
+  bool starts[2] = {false, false};
+  Eigen::Vector2d travel[2] = {Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero()};  // landing - now, clip frame
+  double land_yaw[2] = {0.0, 0.0}, ahead[2] = {0.0, 0.0};
+  for (int k = 0; k < 2; ++k) {
+    if (!swing[k]) b.step[k].active = false;
+    if (!swing[k] || b.step[k].active) continue;
+    starts[k] = true;
+    pose_fk(skel, b.source.preview(0.0), W, P);
+    const Eigen::Vector2d now_clip = P[feet[k]].head<2>();
+    for (int i = 1; i * (1.0 / 60.0) <= kStepLookahead; ++i) {
+      ahead[k] = i / 60.0;
+      pose_fk(skel, b.source.preview(ahead[k]), W, P);
+      travel[k] = P[feet[k]].head<2>() - now_clip;
+      land_yaw[k] = eng::control::heading_of(W[feet[k]]);
+      if (clip_sole_gap(W, P, feet[k]) <= kSwingLift) break;
+    }
+  }
+  if (!swing[0] && !swing[1]) return;
+  pose_fk(skel, b.desired.pose, W, P);  // the placed pose of this tick
   const Eigen::Rotation2Dd heading(b.stance.heading);
   for (int k = 0; k < 2; ++k) {
+    if (!swing[k]) continue;
     Boxer::StepPlan& st = b.step[k];
-    if (!swing[k]) {
-      st.active = false;
-      continue;
-    }
-    if (!st.active) {
-      pose_fk(skel, b.source.preview(0.0), W, P);
-      const Eigen::Vector2d now_clip = P[feet[k]].head<2>();
-      double ahead = 0.0;
-      Eigen::Vector2d land_clip = now_clip;
-      double land_yaw = 0.0;
-      for (int i = 1; i * (1.0 / 60.0) <= kStepLookahead; ++i) {
-        ahead = i / 60.0;
-        pose_fk(skel, b.source.preview(ahead), W, P);
-        land_clip = P[feet[k]].head<2>();
-        land_yaw = eng::control::heading_of(W[feet[k]]);
-        if (clip_sole_gap(W, P, feet[k]) <= kSwingLift) break;
-      }
-      pose_fk(skel, b.desired.pose, W, P);  // the placed pose of this tick
+    if (starts[k]) {
       st.active = true;
       st.elapsed = 0.0;
-      st.duration = std::max(ahead, dt);
-      st.landing = P[feet[k]].head<2>() + heading * (land_clip - now_clip);
-      const Foothold fh = find_foothold(arena, st.landing, b.stance.heading + land_yaw, b.stance.heading);
-      st.shift = fh.shift;
+      st.duration = std::max(ahead[k], dt);
+      st.landing = P[feet[k]].head<2>() + heading * travel[k];
+      const double yaw = b.stance.heading + land_yaw[k];
+      st.shift = find_foothold(arena, st.landing, yaw, b.stance.heading).shift;
       const int fb = b.bodies.body[feet[k]];
       const Eigen::Vector3d from = d.x[fb].p + d.x[fb].R * kFootCentre;
-      const Eigen::Vector2d to = st.landing + st.shift + Eigen::Rotation2Dd(b.stance.heading + land_yaw) * kFootCentre.head<2>();
+      const Eigen::Vector2d to = st.landing + st.shift + Eigen::Rotation2Dd(yaw) * kFootCentre.head<2>();
       st.step_up = arena.top_at(to.x(), to.y()) > arena.top_at(from.x(), from.y()) + kStepUpTolerance;
     }
     st.elapsed += dt;
-    pose_fk(skel, b.desired.pose, W, P);
     const double u = std::clamp(st.elapsed / st.duration, 0.0, 1.0);
     const Eigen::Vector2d s = (3.0 * u * u - 2.0 * u * u * u) * st.shift;
     const Eigen::Vector3d mid = P[feet[k]] + W[feet[k]] * kFootCentre;
