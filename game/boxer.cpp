@@ -168,6 +168,7 @@ constexpr double kQpPlantedFootWeight = 50.0;
 constexpr double kQpTouchGap = 0.002;  // m, a contact closer than this carries load in the plan
 constexpr double kQpLand = 0.03;        // m
 constexpr double kQpSupportMargin = 0.03;  // m, see the com target below
+constexpr double kQpShiftMargin = 0.03;    // m, a weight shift's target inside the stance foot (gate_lift_off)
 constexpr double kQpMaxComSpeed = 1.0;  // m/s, the desired com velocity's bound
 // Swing foot: weight per kg of foot of its ankle task. At 10 the leg's orientation tasks (aimed from where the
 // pelvis actually is) won and a step_back's foot landed 10-16 cm off its target; at 1000 (with the velocity
@@ -255,8 +256,19 @@ void boxer_balance_qp(const eng::physics::Model& m, eng::physics::Data& d, const
       b.qp_pts.clear();
       for (const auto& c : in.contacts) b.qp_pts.push_back(c.point.head<2>());
       eng::control::convex_hull_2d(b.qp_pts, b.qp_hull);
-      const Eigen::Vector2d target = com_a.head<2>() - e.head<2>();
-      e.head<2>() = com_a.head<2>() - eng::control::clamp_to_polygon(b.qp_hull, target, kQpSupportMargin);
+      Eigen::Vector2d target = eng::control::clamp_to_polygon(b.qp_hull, com_a.head<2>() - e.head<2>(), kQpSupportMargin);
+      // A step held for its weight shift (gate_lift_off): the target goes over the other foot's contacts.
+      for (int k = 0; k < 2; ++k) {
+        if (!b.gate[k].holding) continue;
+        const int other = b.bodies.body[feet[1 - k]];
+        b.qp_pts.clear();
+        for (const auto& c : in.contacts)
+          if (c.body == other) b.qp_pts.push_back(c.point.head<2>());
+        if (b.qp_pts.empty()) continue;
+        eng::control::convex_hull_2d(b.qp_pts, b.qp_hull);
+        target = eng::control::clamp_to_polygon(b.qp_hull, target, kQpShiftMargin);
+      }
+      e.head<2>() = com_a.head<2>() - target;
     }
     const double kp = kQpComOmega * kQpComOmega, kd = 2.0 * kQpComOmega;
     in.com_acc = -kp * e - kd * (vcom - v_d);
@@ -318,11 +330,101 @@ void boxer_balance_qp(const eng::physics::Model& m, eng::physics::Data& d, const
   // A non-finite solve (never seen standing; a guard) leaves the joints limp for the tick instead of poisoning the
   // whole simulation.
   const bool finite = b.qp_out.tau.allFinite();
-  for (int k = 0; k < in.dof_end - in.dof_begin; ++k)
-    d.tau[in.dof_begin + k] = k < 6 || !finite ? 0.0 : b.qp_out.tau[k];
+  // The root rows: the root assist's generalised force (zero when it is off).
+  for (int k = 0; k < in.dof_end - in.dof_begin; ++k) d.tau[in.dof_begin + k] = finite ? b.qp_out.tau[k] : 0.0;
+  b.root_torque = finite ? b.qp_out.root_assist : Eigen::Vector3d::Zero();
 }
 
-constexpr double kStepLookahead = 0.8;  // s, how far ahead plan_steps looks for the swing foot's landing
+constexpr double kStepLookahead = 0.8;  // s, how far ahead a step's touch-down is looked for
+
+// Where and when the walk puts a lifted foot down again: the first frame (looking ahead at 60 Hz within the clip,
+// at most kStepLookahead) whose sole is back within kSwingLift of the floor. travel: landing - now (clip floor frame),
+// yaw: the foot's heading there (clip frame). Uses b.fk_W / b.fk_P as scratch.
+struct Touchdown {
+  double ahead = 0.0;
+  Eigen::Vector2d travel = Eigen::Vector2d::Zero();
+  double yaw = 0.0;
+};
+Touchdown find_touchdown(const eng::anim::Skeleton& skel, Boxer& b, int foot) {
+  std::vector<Eigen::Quaterniond>& W = b.fk_W;
+  std::vector<Eigen::Vector3d>& P = b.fk_P;
+  Touchdown td;
+  pose_fk(skel, b.source.preview(0.0), W, P);
+  const Eigen::Vector2d now_clip = P[foot].head<2>();
+  for (int i = 1; i * (1.0 / 60.0) <= kStepLookahead; ++i) {
+    td.ahead = i / 60.0;
+    pose_fk(skel, b.source.preview(td.ahead), W, P);
+    td.travel = P[foot].head<2>() - now_clip;
+    td.yaw = eng::control::heading_of(W[foot]);
+    if (clip_sole_gap(W, P, foot) <= kSwingLift) break;
+  }
+  return td;
+}
+
+// LIFT-OFF GATING (balance QP). A clip's step lifts a foot on its own schedule; the physical body may not have its
+// weight over the other foot yet (the clip shifts it, the physical com lags), and the QP then has one foot's support
+// for a com that is outside it: the boxer falls toward the lifted foot, or the root assist carries it (walk seed 1,
+// 60 s: steps took 86% of the assist). So a foot leaves the ground only when the capture point (com + v_com / omega_0,
+// the linear inverted pendulum's, Pratt et al. 2006) lies inside the other foot's contact hull less kGateMargin; until
+// then it is held planted and the com target moves over the other foot (boxer_balance_qp). A step held longer than
+// kGateMaxHold is skipped (the foot stays down: the clip's foot motion then shows only in the anchor).
+// Measured (walk, 600 s, seeds 1-12, root assist on): the clips' steps lift a foot for 0.13-0.15 s with the capture
+// point 20-30 cm from the stance foot (a boxer's quick step, falling onto the landing foot), so the gate opens for
+// none of them: every step is held down and skipped, and 11 of 12 walks stand the 600 s (without the gate, seeds 1-6:
+// 1 of 6). Opening it also when the capture point is within half the assist's reach of the stance foot (0.29 m)
+// lets 59% of the steps go: 8 of 12 stand, the assist's rms 100 N m against 62.
+// Without the assist (seeds 1-6, 600 s): first falls 114-232 s, mean 185 s (22.8 s on 24 seeds at 60 s before).
+constexpr double kGateMargin = 0.01;   // m
+constexpr double kGateMaxHold = 0.25;  // s
+constexpr double kGateMinSwing = 0.12;  // s: a step opened later than this before the clip's touch-down is skipped
+
+void gate_lift_off(const eng::physics::Model& m, const eng::physics::Data& d, const eng::assets::CharacterDesc& desc,
+                   Boxer& b, bool swing[2], double dt) {
+  const auto& skel = desc.skeleton;
+  const int feet[2] = {skel.find("foot_l"), skel.find("foot_r")};
+  const int pelvis = b.bodies.body[0];
+  for (int k = 0; k < 2; ++k) {
+    Boxer::LiftGate& g = b.gate[k];
+    if (!swing[k]) {
+      g = Boxer::LiftGate{};
+      continue;
+    }
+    if (g.lifted || b.metrics.fell) continue;  // a fallen body's clip steps are not gated (it goes limp)
+    if (g.skipped) {
+      swing[k] = false;
+      continue;
+    }
+    // The other foot's contact hull and the capture point.
+    const int other = b.bodies.body[feet[1 - k]];
+    b.qp_pts.clear();
+    for (const auto& c : d.contacts) {
+      if (c.point.depth < -0.002) continue;
+      if ((c.body_a == other && c.body_b == 0) || (c.body_b == other && c.body_a == 0))
+        b.qp_pts.push_back(c.point.position.head<2>());
+    }
+    bool open = false;
+    if (b.qp_pts.size() >= 2) {
+      eng::control::convex_hull_2d(b.qp_pts, b.qp_hull);
+      const Eigen::Vector3d com = eng::physics::subtree_com(m, d, pelvis);
+      const eng::physics::Vec6 h = eng::physics::spatial_momentum(m, d, pelvis);
+      const Eigen::Vector3d vcom = h.tail<3>() / b.control_body.total_mass;
+      const double z = std::max(0.3, com.z() - b.support_base);
+      const Eigen::Vector2d xi = com.head<2>() + vcom.head<2>() / std::sqrt(9.81 / z);
+      open = (eng::control::clamp_to_polygon(b.qp_hull, xi, kGateMargin) - xi).norm() < 1e-9;
+    }
+    const double swing_left = find_touchdown(skel, b, feet[k]).ahead;
+    if (open && swing_left >= kGateMinSwing) {
+      g.lifted = true, g.holding = false;
+      ++b.metrics.steps_taken;
+      continue;
+    }
+    g.holding = true;
+    g.held += dt;
+    if (g.held > kGateMaxHold || swing_left < kGateMinSwing) g.skipped = true, g.holding = false, ++b.metrics.steps_skipped;
+    swing[k] = false;
+  }
+}
+
 
 // STEPS ON THE CRATES (balance QP). When the clip lifts a foot, look ahead in the clip for where it puts it down
 // (the first frame whose sole is back within kSwingLift of the floor), place that landing on the crates the way the
@@ -338,21 +440,12 @@ void plan_steps(const eng::physics::Data& d, const eng::assets::CharacterDesc& d
   std::vector<Eigen::Vector3d>& P = b.fk_P;
   // A foot the clip just lifted: where (clip floor frame) and when the clip puts it down again.
   bool starts[2] = {false, false};
-  Eigen::Vector2d travel[2] = {Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero()};  // landing - now, clip frame
-  double land_yaw[2] = {0.0, 0.0}, ahead[2] = {0.0, 0.0};
+  Touchdown td[2];
   for (int k = 0; k < 2; ++k) {
     if (!swing[k]) b.step[k].active = false;
     if (!swing[k] || b.step[k].active) continue;
     starts[k] = true;
-    pose_fk(skel, b.source.preview(0.0), W, P);
-    const Eigen::Vector2d now_clip = P[feet[k]].head<2>();
-    for (int i = 1; i * (1.0 / 60.0) <= kStepLookahead; ++i) {
-      ahead[k] = i / 60.0;
-      pose_fk(skel, b.source.preview(ahead[k]), W, P);
-      travel[k] = P[feet[k]].head<2>() - now_clip;
-      land_yaw[k] = eng::control::heading_of(W[feet[k]]);
-      if (clip_sole_gap(W, P, feet[k]) <= kSwingLift) break;
-    }
+    td[k] = find_touchdown(skel, b, feet[k]);
   }
   if (!swing[0] && !swing[1]) return;
   pose_fk(skel, b.desired.pose, W, P);  // the placed pose of this tick
@@ -363,9 +456,9 @@ void plan_steps(const eng::physics::Data& d, const eng::assets::CharacterDesc& d
     if (starts[k]) {
       st.active = true;
       st.elapsed = 0.0;
-      st.duration = std::max(ahead[k], dt);
-      st.landing = P[feet[k]].head<2>() + heading * travel[k];
-      const double yaw = b.stance.heading + land_yaw[k];
+      st.duration = std::max(td[k].ahead, dt);
+      st.landing = P[feet[k]].head<2>() + heading * td[k].travel;
+      const double yaw = b.stance.heading + td[k].yaw;
       st.shift = find_foothold(arena, st.landing, yaw, b.stance.heading).shift;
       const int fb = b.bodies.body[feet[k]];
       const Eigen::Vector3d from = d.x[fb].p + d.x[fb].R * kFootCentre;
@@ -429,6 +522,7 @@ void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const en
     if (!b.have_support_base) b.support_base = std::min(b.stance.lead_top, b.stance.rear_top), b.have_support_base = true;
     b.support_base += (1.0 - std::exp(-dt / kBaseTau)) * (lowest - b.support_base);
   }
+  if (b.balance_qp && d.time > 0.0) gate_lift_off(m, d, desc, b, swing, dt);
   place_desired_pose(desc, arena, b, b.desired);
   if (b.balance_qp) plan_steps(d, desc, arena, b, swing, dt);
   if (b.limp) return;
@@ -551,7 +645,10 @@ void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const en
   }
   eng::control::control_step(skel, b.space, b.gains, b.control_body, b.hook, b.desired, heading, dt, actual, b.servo,
                              help);
-  if (b.balance_qp) {  // the QP writes every joint torque; the root spring below belongs to --balance pd
+  if (b.balance_qp) {  // the QP writes every joint torque; the root spring is its root assist (limit below)
+    b.root_spring.update(b.root_params, dt);
+    // "lowers its motor gains when knocked out" (paper Fig. 7): the assist's limit scales with consciousness.
+    b.qp_params.max_root_assist = b.root_params.max_torque * b.root_spring.consciousness();
     boxer_balance_qp(m, d, desc, b, loaded, dt);
     return;
   }
@@ -707,7 +804,7 @@ void boxer_measure(const eng::physics::Model& m, const eng::physics::Data& d, co
       mt.fell = true;
       mt.fell_reason = "a link other than feet and shanks touched the ground for 0.2 s";
     }
-    if (mt.fell) mt.fell_at = d.time;
+    if (mt.fell) mt.fell_at = d.time, mt.fell_pelvis = d.x[pelvis].p;
     else mt.time_upright += dt;
   }
 }

@@ -26,7 +26,9 @@ struct BoxerMetrics {
   bool fell = false;
   double fell_at = -1.0;
   std::string fell_reason;
+  Eigen::Vector3d fell_pelvis = Eigen::Vector3d::Zero();  // where the pelvis was at the fall (world, m)
   double time_upright = 0.0;
+  int steps_taken = 0, steps_skipped = 0;  // balance QP: the clip's steps lifted off / held down (gate_lift_off)
   double max_com_speed = 0.0;
   // Root spring use (external torque on the pelvis, no reaction): sum of |tau|^2 dt, peak |tau|, time at its limit.
   double root_torque_sq_dt = 0.0, root_torque_peak = 0.0, root_saturated_time = 0.0;
@@ -91,6 +93,15 @@ struct Boxer {
     bool step_up = false;  // the landing crate is higher than the one the foot leaves (no shuffle, it lifts over)
   };
   StepPlan step[2];
+  // Balance QP: lift-off gating (gate_lift_off). A foot the clip lifts stays down until the capture point is over
+  // the other foot; meanwhile the com target moves over that foot (the weight shift before a step).
+  struct LiftGate {
+    bool lifted = false;   // the foot left the ground for this step
+    bool holding = false;  // the clip lifts it, it is held down (weight shift under way)
+    bool skipped = false;  // held too long: this step is not taken (the foot stays planted until the clip lands it)
+    double held = 0.0;     // s held so far
+  };
+  LiftGate gate[2];
   double support_base = 0.0;  // balance QP: the clip's floor height under the actual feet (low-passed)
   bool have_support_base = false;
   std::vector<Eigen::Vector2d> qp_pts, qp_hull;  // scratch: contact points on the floor, their hull

@@ -76,8 +76,11 @@ flags:
   --servo-zeta Z         servo damping ratio (default 1)
   --balance qp|pd        qp: the balance QP computes the joint torques (centre of pressure in the feet);
                          pd: implicit world-space springs plus a PD shift of the desired root (default qp)
-  --root-spring on|off   the paper's torque-limited root spring on the pelvis tilt (default off)
-  --root-spring-max NM   its torque limit in N m (default 120)
+  --root-spring on|off|auto
+                         the paper's torque-limited root spring. With --balance qp: a torque on the pelvis the
+                         QP plans (the root assist); with pd: a spring on the pelvis tilt. auto (default): on for
+                         graph-walk and match (the paper's boxers), off for stand / push (the balance lab)
+  --root-spring-max NM   its torque limit in N m (default 400 with qp, 120 with pd)
 graph flags:
   --report FILE.json     graph figures
   --dot FILE.dot         the graph for Graphviz
@@ -203,7 +206,8 @@ eng::Result<Options> parse_cli(const std::vector<std::string>& args) {
     } else if (flag == "--root-spring") {
       auto v = value();
       if (!v) return missing();
-      if (*v != "on" && *v != "off") return bad("--root-spring must be on or off, got '" + *v + "'");
+      if (*v != "on" && *v != "off" && *v != "auto")
+        return bad("--root-spring must be on, off or auto, got '" + *v + "'");
       o.root_spring = *v;
     } else if (flag == "--root-spring-max") {
       auto v = value();

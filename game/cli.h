@@ -44,11 +44,11 @@ struct Options {
   double servo_zeta = 1.0;
   // Root spring (paper section V: torque-limited, "for some dynamic balance situations"); off by default: the
   // boxers stand with no root help at all.
-  std::string root_spring = "off";     // on | off
+  std::string root_spring = "auto";    // on | off | auto (on for graph-walk and match)
   // Balance: "qp" = the balance QP (engine/control/balance_qp.h) turns the desired pose into joint torques;
   // "pd" = eq. 3 as implicit joint springs plus the PD shift of the desired root (boxer.cpp's balance layer).
   std::string balance = "qp";
-  double root_spring_max = 120.0;      // N m, its torque limit
+  double root_spring_max = -1.0;      // N m, its torque limit; < 0: 400 with the QP, 120 with pd
   // graph tool
   std::string graph_report;
   std::string graph_dot;

@@ -34,6 +34,20 @@ constexpr double kAnkleTorqueLimit = 0.0;
 // Planted ankle's twist spring relative to eq. 3's (ImplicitServoJoint::twist_scale). Measured, stand 60 s seeds
 // 1-5: 0.3 -> world 9/10, person 7/10 (slow yaw creep, falls at ~56 s); 0.6 -> world 10/10; 0.8 -> no better.
 constexpr double kPlantedTwistScale = 0.6;
+// Root spring limits (N m): the PD tilt spring of --balance pd (stop 6), and the QP's root assist. The assist's
+// price per (N m)^2 (balance_qp.h) and limit, measured on the walk (600 s, seeds 1-6, with lift-off gating; mean
+// first fall / standing the 600 s / assist rms): off 185 s / 0 of 6; price 1, limit 200: 353 s / 1 / 28 N m;
+// price 0.3, limit 400: 531 s / 5 / 50 N m. Below 0.3 the plan leans on it everywhere (0.3 without the re-solve
+// at the limit: rms 58 N m, falls where it was clipped).
+constexpr double kRootSpringMax = 120.0;
+constexpr double kRootAssistMax = 400.0;
+constexpr double kRootAssistPrice = 0.3;
+// The balance QP's price on joint torques per (N m)^2 with the root assist on (balance_qp.h: bounds the internal
+// contact forces; without it, assist on, a knee landing on a crate was planned at 38 kN m and the simulation diverged,
+// walk seed 6 at 192 s). 1e-4 / 1e-3 / 1e-2 walk the same (60 s, seeds 1-12: 10 / 9 / 10 standing). Not priced with
+// the assist off (no divergence seen there): priced, the person-space stand seed 11 falls at 58.8 s (1e-4) or 57.6 s
+// (1e-3), a planted foot's slow yaw creep, where unpriced it stands the minute.
+constexpr double kQpTorquePrice = 1e-3;
 
 void add_static_arena(World& w) {
   Geom floor;
@@ -144,8 +158,16 @@ void add_boxer(World& w, int index, const Eigen::Vector3f& color, bool limp, con
   b.control_body = control_body_of(w.boxer_desc);
   b.servo.resize(w.boxer_desc.skeleton.size());
   if (!limp) setup_implicit_servo(w, b);
-  b.root_params.enabled = !limp && w.options.root_spring == "on";
-  b.root_params.max_torque = w.options.root_spring_max;
+  // The root spring: asked for, or (auto) for the paper's boxers, the graph walk and the match.
+  const bool boxers = w.options.scenario == "graph-walk" || w.options.scenario == "match";
+  b.root_params.enabled = !limp && (w.options.root_spring == "on" || (w.options.root_spring == "auto" && boxers));
+  b.root_params.max_torque = w.options.root_spring_max >= 0.0 ? w.options.root_spring_max
+                             : b.balance_qp                   ? kRootAssistMax
+                                                              : kRootSpringMax;
+  // Under the balance QP the root spring is the QP's root assist (balance_qp.h): the plan chooses the torque.
+  b.qp_params.w_root_assist = b.root_params.enabled ? kRootAssistPrice : 0.0;
+  b.qp_params.max_root_assist = b.root_params.max_torque;
+  b.qp_params.w_torque = b.root_params.enabled ? kQpTorquePrice : 0.0;
   if (w.options.scenario == "graph-walk" || w.options.scenario == "match") {
     // The paper's boxers: a seeded random walk of the motion graph (each boxer its own stream).
     b.source = PoseSource::graph_walk(w.graph, w.options.seed * 2654435761ull + uint64_t(index));
@@ -295,6 +317,9 @@ nlohmann::json world_report(const World& w) {
                       {"servo", b.limp ? "limp" : servo_space_name(b.space)},
                       {"fell", m.fell},
                       {"fell_at_s", m.fell_at},
+                      {"steps_taken", m.steps_taken},
+                      {"steps_skipped", m.steps_skipped},
+                      {"fell_pelvis_m", {m.fell_pelvis.x(), m.fell_pelvis.y(), m.fell_pelvis.z()}},
                       {"fell_reason", m.fell_reason},
                       {"time_upright_s", m.time_upright},
                       {"max_com_speed", m.max_com_speed},

@@ -85,6 +85,14 @@ void nnls(const MatX& Q, const VecX& q, BalanceQp& ws, VecX& x) {
   }
 }
 
+// The root assist's torque from the last six unknowns (+-x, +-y, +-z) and its magnitude.
+Vec3 assist_torque(const VecX& beta, int nc) {
+  Vec3 a = Vec3::Zero();
+  for (int k = 0; k < 6; ++k) a += beta[4 * nc + k] * (k % 2 == 0 ? 1.0 : -1.0) * Vec3::Unit(k / 2);
+  return a;
+}
+double assist_norm(const VecX& beta, int nc) { return assist_torque(beta, nc).norm(); }
+
 }  // namespace
 
 Vec3 bias_angular_acceleration(const physics::Model& m, const physics::Data& d, int body) {
@@ -104,7 +112,9 @@ void balance_qp_solve(const physics::Model& m, const physics::Data& d, const Bal
                       const BalanceQpParams& p, BalanceQp& ws, BalanceQpResult& out) {
   const int b0 = in.dof_begin, n = in.dof_end - in.dof_begin;
   const int nc = static_cast<int>(in.contacts.size());
-  const int K = 4 * nc;
+  // Unknowns of the reduced problem: 4 pyramid edges per contact, then (root assist on) +-x, +-y, +-z torques.
+  const int na = p.w_root_assist > 0.0 && p.max_root_assist > 0.0 ? 6 : 0;
+  const int K = 4 * nc + na;
 
   // Mass and com of the articulation.
   double mass = 0.0;
@@ -168,6 +178,16 @@ void balance_qp_solve(const physics::Model& m, const physics::Data& d, const Bal
       ws.G.col(4 * c + k).noalias() = ws.J.bottomRows<3>().transpose() * u[k];
     }
   }
+  // Root assist: a pure torque on the root body, a moment about the com like any other.
+  if (na > 0) {
+    block_jacobian(m, d, in.root_body, d.x[in.root_body].p, b0, n, ws.J);
+    for (int k = 0; k < 6; ++k) {
+      const Vec3 e = (k % 2 == 0 ? 1.0 : -1.0) * Vec3::Unit(k / 2);
+      ws.A.block<3, 1>(0, 4 * nc + k).setZero();
+      ws.A.block<3, 1>(3, 4 * nc + k) = std::sqrt(p.w_moment) * e;
+      ws.G.col(4 * nc + k).noalias() = ws.J.topRows<3>().transpose() * e;
+    }
+  }
 
   // ---- Newton-Euler of the floating base, exactly: M_root qacc + c_root = F beta. For a given beta the best
   // qacc solves the KKT system [H E^T; E 0] [qacc; lambda] = [g; F beta - c_root], affine in beta:
@@ -204,9 +224,53 @@ void balance_qp_solve(const physics::Model& m, const physics::Data& d, const Bal
     ws.w -= ws.g;
     ws.q.noalias() = ws.A.transpose() * ws.b;
     ws.q.noalias() -= Q1.transpose() * ws.w;
-    const double reg = p.reg_beta * ws.Q.diagonal().mean() + 1e-12;
+    // Joint torques priced too (minimum effort): tau_joints = T1 beta + t0 is affine in beta like qacc. Without it
+    // the torques are free in the plan, and a body touching the crates at several links (a knee and a foot) could be
+    // planned with large opposing contact forces (the ridge alone let a knee landing ask 38 kN m: walk seed 6,
+    // root assist on, 192 s, the simulation then diverged).
+    if (p.w_torque > 0.0 && n > 6) {
+      const int nj = n - 6;
+      ws.T1.noalias() = M.bottomRows(nj) * Q1;
+      ws.T1 -= ws.G.bottomRows(nj);
+      ws.t0.noalias() = M.bottomRows(nj) * q0;
+      for (int k = 0; k < nj; ++k) {
+        const int dof = b0 + 6 + k;
+        const auto& body = m.bodies[m.dof_body[dof]];
+        ws.T1.row(k) += body.armature * Q1.row(6 + k);
+        ws.t0[k] += body.armature * q0[6 + k] + ws.c_full[dof] + body.damping * d.v[dof];
+      }
+      ws.Q.noalias() += p.w_torque * ws.T1.transpose() * ws.T1;
+      ws.q.noalias() -= p.w_torque * ws.T1.transpose() * ws.t0;
+    }
+    const double reg = (nc > 0 ? p.reg_beta * ws.Q.diagonal().head(4 * nc).mean() : 0.0) + 1e-12;
     ws.Q.diagonal().array() += reg;
+    ws.Q.diagonal().tail(na).array() += p.w_root_assist;
     nnls(ws.Q, ws.q, ws, ws.beta);
+    // The torque limit: where the plan asks for more, the assist's price goes up until the plan fits the limit (the
+    // smallest price found that does, by factors of 10 then bisection in log price), so the plan is made within the
+    // limit rather than clipped after it (a clipped plan's body misses its accelerations; clipping alone: walk 60 s
+    // at price 0.3, rms 58 N m and falls where it clipped).
+    if (na > 0 && assist_norm(ws.beta, nc) > p.max_root_assist) {
+      const Eigen::Matrix<double, 6, 1> base = ws.Q.diagonal().tail<6>().array() - p.w_root_assist;
+      auto solve_at = [&](double price) {
+        ws.Q.diagonal().tail<6>() = base.array() + price;
+        nnls(ws.Q, ws.q, ws, ws.beta);
+        return assist_norm(ws.beta, nc) <= p.max_root_assist;
+      };
+      double lo = p.w_root_assist, hi = lo;
+      bool fits = false;
+      for (int i = 0; i < 8 && !fits; ++i) {
+        lo = hi, hi *= 10.0;
+        fits = solve_at(hi);
+      }
+      ws.beta_fit = ws.beta;
+      for (int i = 0; i < 6 && fits; ++i) {
+        const double mid = std::sqrt(lo * hi);
+        if (solve_at(mid)) hi = mid, ws.beta_fit = ws.beta;
+        else lo = mid;
+      }
+      ws.beta = ws.beta_fit;
+    }
   }
   out.qacc = q0;
   if (K > 0) out.qacc.noalias() += Q1 * ws.beta;
@@ -227,17 +291,31 @@ void balance_qp_solve(const physics::Model& m, const physics::Data& d, const Bal
     fn_sum += fn;
   }
   out.cop = fn_sum > 0.0 ? Vec3(cop_sum / fn_sum) : com;
+  out.root_assist = na > 0 ? assist_torque(ws.beta, nc) : Vec3::Zero();
+  const double scale = std::min(1.0, p.max_root_assist / std::max(out.root_assist.norm(), 1e-12));
+  out.assist_clamped = scale < 1.0;
+  out.root_assist *= scale;
 
   // ---- Torques: tau = M qacc + c - J^T f (plus the passive terms the step adds: armature on M's diagonal,
   // joint damping -D v, integrated implicitly by the step and taken here at the current v) ----
   out.tau.noalias() = M * out.qacc;
-  if (K > 0) out.tau.noalias() -= ws.G * ws.beta;  // - J^T f
+  if (nc > 0) out.tau.noalias() -= ws.G.leftCols(4 * nc) * ws.beta.head(4 * nc);  // - J^T f
   for (int k = 0; k < n; ++k) {
     const int dof = b0 + k;
     const auto& body = m.bodies[m.dof_body[dof]];
     out.tau[k] += body.armature * out.qacc[k] + ws.c_full[dof] + body.damping * d.v[dof];
   }
-  out.root_residual = out.tau.head<6>().norm();
+  // The root rows are the assist's generalised force (J_root^T [tau_a; 0]), zero when off; after a clamp the root
+  // gets the clamped torque and the body falls short of qacc there.
+  ws.tau_assist.setZero(6);
+  if (na > 0) {
+    ws.tau_assist = (ws.G.topRows(6).rightCols(na) * ws.beta.tail(na)) * scale;
+    out.root_residual = (out.tau.head<6>() - ws.tau_assist / scale).norm();
+    out.tau.head<6>() = ws.tau_assist;
+  } else {
+    out.root_residual = out.tau.head<6>().norm();
+    out.tau.head<6>().setZero();  // the floating base is unactuated
+  }
 }
 
 }  // namespace eng::control

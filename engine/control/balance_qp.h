@@ -20,7 +20,8 @@
 // point accelerations, e.g. a swing foot, and, heavily weighted, zero acceleration of every contact point;
 // F_des = m (a_com_des - g), Kudoh's com acceleration as a PD target; N_des the desired rate of the centroidal
 // angular momentum) subject to, exactly,
-//       M_root qacc + c_root = (J^T f)_root      (Newton-Euler of the whole body: the floating base is unactuated).
+//       M_root qacc + c_root = (J^T f)_root      (Newton-Euler of the whole body: the floating base is unactuated;
+//                                                 with the root assist, + J_root^T [tau_a; 0], tau_a priced, below).
 // SOLVE. For a given beta the best qacc solves the equality-constrained least squares through its KKT system,
 // so qacc = q0 + Q1 beta (one LU, K + 1 right-hand sides). Substituted back, the problem in beta alone is a
 // non-negative least squares, solved exactly by Lawson & Hanson's active set. Then tau = M qacc + c - J^T f; its
@@ -84,23 +85,36 @@ struct BalanceQpParams {
   double w_moment = 1.0;    // weight on the ground moment error about the com (per (N m)^2)
   double reg_beta = 1e-6;   // ridge on beta relative to the reduced problem's mean diagonal (spreads the load)
   double reg_qacc = 1e-4;   // damping of qacc (per (unit acceleration)^2), keeps the KKT system regular
+  double w_torque = 0.0;    // weight on the joint torques (per (N m)^2): minimum effort, bounds internal forces
   double w_hold = 1e4;      // weight of "contact points do not accelerate" (per (m/s^2)^2)
   double hold_damping = 20.0;  // 1/s: the held points' target acceleration is -hold_damping * their velocity
+  // Root assist (the paper's root spring, section V: "for some dynamic balance situations a root spring applies
+  // torques at the root, however these are torque limited"), here as an unknown of the QP: an external torque on
+  // the root body, priced at w_root_assist per (N m)^2, so the plan takes it only where the ground reaction cannot
+  // give the com and momentum targets, and held within max_root_assist (where the plan asks for more, the price is
+  // raised until it fits; a final clamp takes any rest). 0 = off (the floating base unactuated).
+  double w_root_assist = 0.0;
+  double max_root_assist = 100.0;  // N m
 };
 
 struct BalanceQpResult {
-  VecX qacc, tau;          // over the block (tau's first six ~ 0)
+  VecX qacc, tau;          // over the block (tau's first six: the root assist's generalised force, zero when off)
   Vec3 force = Vec3::Zero();   // planned net ground force (N)
   Vec3 moment = Vec3::Zero();  // planned moment about the com (N m)
   Vec3 cop = Vec3::Zero();     // planned centre of pressure (force-weighted contact point; com if no force)
   std::vector<Vec3> contact_force;  // per input contact
-  double root_residual = 0.0;  // |tau_root| (N, N m): how exactly the solve met the Newton-Euler rows
+  Vec3 root_assist = Vec3::Zero();  // the root assist torque (world, N m; after the clamp), zero when off
+  bool assist_clamped = false;      // even at the raised price the plan asked for more than max_root_assist
+  // |tau_root - assist| (N, N m): how exactly the solve met the Newton-Euler rows (tau's root rows are the assist's
+  // generalised force, zero when off)
+  double root_residual = 0.0;
 };
 
 // Workspace (sized on first use and reused; Eigen reallocates when the number of contacts changes).
 struct BalanceQp {
   MatX M_full, J, KKT, A, G, Q, rhs, sol, HQ1;  // G: generalised force of each pyramid edge (J_c^T u), n x K
-  VecX c_full, beta, q, g;
+  VecX c_full, beta, q, g, tau_assist, t0, beta_fit;
+  MatX T1;  // joint torques as an affine function of beta: T1 beta + t0
   Eigen::Matrix<double, 6, 1> b;
   Eigen::PartialPivLU<MatX> lu;
   std::vector<Vec3> basis;

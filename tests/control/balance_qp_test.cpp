@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "engine/physics/dynamics.h"
@@ -51,6 +52,20 @@ struct Stand {
   }
   double mass() const { return 12.0; }
 };
+
+// Independent check of a plan: forward dynamics (ABA, RBDA Table 7.1) of its torques (the root rows included: the
+// root assist's generalised force, zero when off) plus J^T f of its planned contact forces.
+VecX qacc_under_aba(Stand& s, const BalanceQpResult& out) {
+  VecX tau = out.tau;
+  MatX J;
+  for (size_t c = 0; c < s.in.contacts.size(); ++c) {
+    point_jacobian(s.m, s.d, s.in.contacts[c].body, s.in.contacts[c].point, J);
+    tau += J.transpose() * out.contact_force[c];
+  }
+  VecX qacc(s.m.nv);
+  aba(s.m, s.d, tau, qacc);
+  return qacc;
+}
 }  // namespace
 
 TEST(BalanceQp, StandingStillCarriesTheWeightAndTheHingeHoldsTheArmAgainstGravity) {
@@ -85,15 +100,8 @@ TEST(BalanceQp, TorquesAndPlannedContactForcesReproduceTheQaccUnderAba) {
   BalanceQp ws;
   BalanceQpResult out;
   eng::control::balance_qp_solve(s.m, s.d, s.in, BalanceQpParams{}, ws, out);
-  // Independent check: forward dynamics of tau + J^T f (ABA, RBDA Table 7.1) gives back the planned qacc.
-  VecX tau = out.tau;
-  MatX J;
-  for (size_t c = 0; c < s.in.contacts.size(); ++c) {
-    point_jacobian(s.m, s.d, s.in.contacts[c].body, s.in.contacts[c].point, J);
-    tau += J.transpose() * out.contact_force[c];
-  }
-  VecX qacc(s.m.nv);
-  aba(s.m, s.d, tau, qacc);
+  // Independent check: forward dynamics of tau + J^T f gives back the planned qacc.
+  const VecX qacc = qacc_under_aba(s, out);
   EXPECT_LT((qacc - out.qacc).cwiseAbs().maxCoeff(), 1e-8);
   EXPECT_LT(out.tau.head<6>().norm(), 1e-6);  // the floating base gets no torque
 }
@@ -144,4 +152,61 @@ TEST(BalanceQp, BiasAccelerationsMatchFiniteDifferencesOfTheVelocity) {
   point_and_velocity(d2, p1, v1, w1);
   EXPECT_LT(((v1 - v0) / h - a_bias).norm(), 1e-4 * (1.0 + a_bias.norm()));
   EXPECT_LT(((w1 - w0) / h - alpha_bias).norm(), 1e-4 * (1.0 + alpha_bias.norm()));
+}
+
+TEST(BalanceQp, RootAssistHoldsAComOutsideTheSupportWithTheClosedFormTorqueAndWithinItsLimit) {
+  // Only the two -x corners touch: the com (x = 2 * 0.2 / 12 = 0.033) is 0.133 m beyond the support line, so the
+  // ground alone cannot hold the box up (it tips about the line).
+  Stand s;
+  s.in.contacts.erase(std::remove_if(s.in.contacts.begin(), s.in.contacts.end(),
+                                     [](const eng::control::QpContact& c) { return c.point.x() > 0.0; }),
+                      s.in.contacts.end());
+  ASSERT_EQ(s.in.contacts.size(), 2u);
+  BalanceQp ws;
+  BalanceQpResult off, on, limited;
+  eng::control::balance_qp_solve(s.m, s.d, s.in, BalanceQpParams{}, ws, off);
+  BalanceQpParams p;
+  p.w_root_assist = 1e-4;
+  p.max_root_assist = 100.0;
+  eng::control::balance_qp_solve(s.m, s.d, s.in, p, ws, on);
+  const int pitch = 4;  // the free root's angular velocity about y (the torso's tipping)
+  EXPECT_EQ(off.root_assist.norm(), 0.0);
+  EXPECT_GT(std::abs(off.qacc[pitch]), 5.0);  // without help the box tips (gravity's moment 15.7 N m)
+  // With the assist it stands: the torque is gravity's moment about the support line, m g 0.1333 (closed form), and
+  // the box does not tip.
+  const double g = 9.81, lever = 0.1 + 2.0 * 0.2 / 12.0;
+  EXPECT_NEAR(on.root_assist.y(), -s.mass() * g * lever, 0.02 * s.mass() * g * lever);
+  EXPECT_LT(std::abs(on.qacc[pitch]), 0.05 * std::abs(off.qacc[pitch]));
+  EXPECT_FALSE(on.assist_clamped);
+  // The torques, the contact forces and the assist (tau's root rows) reproduce qacc under ABA.
+  const VecX qacc = qacc_under_aba(s, on);
+  EXPECT_LT((qacc - on.qacc).cwiseAbs().maxCoeff(), 1e-8);
+  // A limit below what holding it takes: the price rises until the plan fits the limit (to within the final clamp),
+  // and the box tips, slower than without help.
+  p.max_root_assist = 5.0;
+  eng::control::balance_qp_solve(s.m, s.d, s.in, p, ws, limited);
+  EXPECT_LE(limited.root_assist.norm(), 5.0 + 1e-9);
+  EXPECT_GT(limited.root_assist.norm(), 4.0);
+  EXPECT_GT(std::abs(limited.qacc[pitch]), std::abs(on.qacc[pitch]));
+  EXPECT_LT(std::abs(limited.qacc[pitch]), std::abs(off.qacc[pitch]));
+}
+
+TEST(BalanceQp, PricedTorquesStillHoldTheArmAndMeetTheDynamics) {
+  Stand s(0.4);
+  for (int k = 0; k < s.m.nv; ++k) s.d.v[k] = 0.1 * std::sin(1.0 + 2.3 * k);
+  forward_kinematics(s.m, s.d);
+  BalanceQp ws;
+  BalanceQpResult free_tau, priced;
+  eng::control::balance_qp_solve(s.m, s.d, s.in, BalanceQpParams{}, ws, free_tau);
+  BalanceQpParams p;
+  p.w_torque = 1e-3;
+  eng::control::balance_qp_solve(s.m, s.d, s.in, p, ws, priced);
+  const VecX qacc = qacc_under_aba(s, priced);
+  EXPECT_LT((qacc - priced.qacc).cwiseAbs().maxCoeff(), 1e-8);
+  EXPECT_LT(priced.root_residual, 1e-6);
+  // The hinge still holds the arm: the price (1e-3 per (N m)^2 on gravity's 3.6 N m) is nothing against the
+  // tracking, so the hinge torque and acceleration barely move.
+  const int hinge = s.m.bodies[s.arm].v_index;
+  EXPECT_NEAR(priced.tau[hinge], free_tau.tau[hinge], 0.01 * std::abs(free_tau.tau[hinge]));
+  EXPECT_NEAR(priced.qacc[hinge], free_tau.qacc[hinge], 0.01);
 }

@@ -81,10 +81,33 @@ TEST(Drill, TheBalanceQpKeepsThePunchesUpWhereThePdBalanceLayerFalls) {
   }
 }
 
-TEST(GraphWalk, AFallenBoxerStaysBoundedInsteadOfFlailing) {
-  // Walk seed 7 falls at 3.5 s (README). The QP's torques on a lying body once made the limbs flail and the
-  // simulation diverge (com speed 1e129 m/s on seed 3); a fallen boxer now goes limp. Bounded: a fall is ~3.4 m/s.
-  const auto m = run({"--scenario", "graph-walk", "--seed", "7"}, 8.0);
+TEST(Drill, AStepIsHeldDownUntilTheWeightIsOverTheOtherFoot) {
+  // The step_forward drill floored 13 of 16 boxers on seeds 1-8 when the clip lifted the foot on its own schedule
+  // (README, "The walk"). Gated, the clip's quick steps (capture point 20-30 cm from the stance foot at lift-off)
+  // are held down and skipped, and seed 2's boxer stands through three of them.
+  const auto m = run({"--scenario", "stand", "--seed", "2", "--clip", "step_forward"}, 10.0);
+  EXPECT_FALSE(m.fell) << "fell at " << m.fell_at << " s (" << m.fell_reason << ")";
+  EXPECT_GE(m.steps_skipped, 3);  // each play lifts the lead foot, then the rear
+  EXPECT_EQ(m.steps_taken, 0);
+}
+
+TEST(GraphWalk, TheWalkStandsOnTheRootAssistWithinItsLimit) {
+  // Walk seed 7 fell at 3.5 s before the lift-off gating and the root assist (README); now it stands, the assist
+  // (the paper's torque-limited root spring, on by default for the walk) never above its 400 N m.
+  const auto m = run({"--scenario", "graph-walk", "--seed", "7"}, 20.0);
+  EXPECT_FALSE(m.fell) << "fell at " << m.fell_at << " s (" << m.fell_reason << ")";
+  EXPECT_GT(m.root_torque_peak, 1.0);  // it is used ...
+  EXPECT_LE(m.root_torque_peak, 400.0 + 1e-6);  // ... within its limit
+  EXPECT_GT(m.steps_skipped, 0);
+}
+
+TEST(Fall, AFallenBoxerGoesLimpAndStaysBounded) {
+  // The QP's torques on a lying body once made the limbs flail and the simulation diverge (com speed 1e129 m/s on
+  // walk seed 3); a fallen boxer now goes limp. Bounded: a fall is ~3.4 m/s. Floored by a 900 N push from behind
+  // (the walk, with lift-off gating and its root assist, no longer falls within seconds to test this on).
+  const auto m = run({"--scenario", "push", "--seed", "3", "--push-dir", "0", "--push-force", "900", "--push-duration",
+                      "0.1", "--push-at", "2"},
+                     8.0);
   EXPECT_TRUE(m.fell);
   EXPECT_LT(m.max_com_speed, 6.0);
 }

@@ -14,7 +14,8 @@ TEST(Cli, DefaultsAreTheDocumentedOnes) {
   EXPECT_EQ(o->scenario, "arena");
   EXPECT_FALSE(o->headless);
   EXPECT_TRUE(o->validation);
-  EXPECT_EQ(o->root_spring, "off");  // no root help unless asked for
+  EXPECT_EQ(o->root_spring, "auto");  // root help for the paper's boxers (graph-walk, match), not the balance lab
+  EXPECT_LT(o->root_spring_max, 0.0);  // its limit by the balance layer (world.cpp)
 }
 
 TEST(Cli, ParsesEveryValueFlag) {
