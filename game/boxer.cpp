@@ -370,10 +370,10 @@ Touchdown find_touchdown(const eng::anim::Skeleton& skel, Boxer& b, int foot) {
 // kGateMaxHold is skipped (the foot stays down: the clip's foot motion then shows only in the anchor).
 // Measured (walk, 600 s, seeds 1-12, root assist on): the clips' steps lift a foot for 0.13-0.15 s with the capture
 // point 20-30 cm from the stance foot (a boxer's quick step, falling onto the landing foot), so the gate opens for
-// none of them: every step is held down and skipped, and 11 of 12 walks stand the 600 s (without the gate, seeds 1-6:
+// none of them: every step is held down and skipped, and 12 of 12 walks stand the 600 s (without the gate, seeds 1-6:
 // 1 of 6). Opening it also when the capture point is within half the assist's reach of the stance foot (0.29 m)
-// lets 59% of the steps go: 8 of 12 stand, the assist's rms 100 N m against 62.
-// Without the assist (seeds 1-6, 600 s): first falls 114-232 s, mean 185 s (22.8 s on 24 seeds at 60 s before).
+// lets 59% of the steps go: 8 of 12 stand (an earlier build), the assist's rms 100 N m against 62.
+// Without the assist (seeds 1-6, 600 s): first falls 114-229 s, mean 167 s (22.8 s on 24 seeds at 60 s before).
 constexpr double kGateMargin = 0.01;   // m
 constexpr double kGateMaxHold = 0.25;  // s
 constexpr double kGateMinSwing = 0.12;  // s: a step opened later than this before the clip's touch-down is skipped

@@ -36,9 +36,10 @@ constexpr double kAnkleTorqueLimit = 0.0;
 constexpr double kPlantedTwistScale = 0.6;
 // Root spring limits (N m): the PD tilt spring of --balance pd (stop 6), and the QP's root assist. The assist's
 // price per (N m)^2 (balance_qp.h) and limit, measured on the walk (600 s, seeds 1-6, with lift-off gating; mean
-// first fall / standing the 600 s / assist rms): off 185 s / 0 of 6; price 1, limit 200: 353 s / 1 / 28 N m;
-// price 0.3, limit 400: 531 s / 5 / 50 N m. Below 0.3 the plan leans on it everywhere (0.3 without the re-solve
-// at the limit: rms 58 N m, falls where it was clipped).
+// first fall / standing the 600 s / assist rms; earlier builds of the change): off 185 s / 0 of 6; price 1, limit
+// 200: 353 s / 1 / 28 N m; price 0.3, limit 400: 531 s / 5 / 50 N m (as committed, seeds 1-12: 12 of 12 stand, rms
+// 18-98 N m; off: 167 s on seeds 1-6). Below 0.3 the plan leans on it everywhere (0.3 without the re-solve at the
+// limit: rms 58 N m, falls where it was clipped).
 constexpr double kRootSpringMax = 120.0;
 constexpr double kRootAssistMax = 400.0;
 constexpr double kRootAssistPrice = 0.3;
