@@ -25,21 +25,57 @@ Vec6 bias_spatial_acceleration(const physics::Model& m, const physics::Data& d, 
   return a;
 }
 
-// Rows of the body's Jacobian restricted to the block [b0, b0 + n): angular (3 x n) and the linear velocity of
-// a point fixed to it (3 x n). Columns outside the body's ancestors stay zero.
+// The body's Jacobian over the block [b0, b0 + n), compacted to the columns it can move (its ancestor DoFs in
+// the block, listed in `cols` as block indices): angular rows 0-2, the linear velocity of a point fixed to it rows
+// 3-5. A boxer's hand depends on 18 of 37 DoFs, a foot on 15: the task products below run over those only.
 void block_jacobian(const physics::Model& m, const physics::Data& d, int body, const Vec3& p, int b0, int n,
-                    MatX& J) {
-  J.setZero(6, n);
-  for (int k = m.body_last_dof[body]; k >= 0; k = m.dof_parent[k]) {
-    if (k < b0 || k >= b0 + n) continue;
-    J.block<3, 1>(0, k - b0) = ang(d.cdof[k]);
-    J.block<3, 1>(3, k - b0) = lin(d.cdof[k]) + ang(d.cdof[k]).cross(p);
+                    MatX& J, std::vector<int>& cols) {
+  cols.clear();
+  for (int k = m.body_last_dof[body]; k >= 0; k = m.dof_parent[k])
+    if (k >= b0 && k < b0 + n) cols.push_back(k - b0);
+  J.resize(6, static_cast<int>(cols.size()));
+  for (int a = 0; a < static_cast<int>(cols.size()); ++a) {
+    const int k = b0 + cols[a];
+    J.block<3, 1>(0, a) = ang(d.cdof[k]);
+    J.block<3, 1>(3, a) = lin(d.cdof[k]) + ang(d.cdof[k]).cross(p);
+  }
+}
+
+// Cholesky factor of Q restricted to the passive set, in P's order (L lower, np x np in ws.L): appending P's last
+// variable adds one row, L_new = [L 0; l^T d] with L l = Q_P,j and d = sqrt(Q_jj - l.l) (O(np^2), Golub & Van Loan
+// sec. 4.2); a variable leaving rebuilds the factor (rare: the inner loop's drops).
+void chol_append(const MatX& Q, const std::vector<int>& P, int np, MatX& L) {
+  const int j = P[np - 1];
+  double dd = Q(j, j);
+  for (int a = 0; a < np - 1; ++a) {
+    double s = Q(P[a], j);
+    for (int c = 0; c < a; ++c) s -= L(a, c) * L(np - 1, c);
+    const double l = s / L(a, a);
+    L(np - 1, a) = l;
+    dd -= l * l;
+  }
+  // Q is positive definite (the ridge); a round-off non-positive pivot is clamped, not propagated.
+  L(np - 1, np - 1) = std::sqrt(std::max(dd, 1e-15 * Q(j, j) + 1e-300));
+}
+
+// z = Q_PP^-1 q_P from the factor: L y = q_P, L^T z = y.
+void chol_solve(const VecX& q, const std::vector<int>& P, int np, const MatX& L, VecX& z) {
+  for (int a = 0; a < np; ++a) {
+    double s = q[P[a]];
+    for (int c = 0; c < a; ++c) s -= L(a, c) * z[c];
+    z[a] = s / L(a, a);
+  }
+  for (int a = np - 1; a >= 0; --a) {
+    double s = z[a];
+    for (int c = a + 1; c < np; ++c) s -= L(c, a) * z[c];
+    z[a] = s / L(a, a);
   }
 }
 
 // Lawson & Hanson's active-set NNLS ("Solving Least Squares Problems", 1974, ch. 23) in normal-equation form:
 // min 1/2 x^T Q x - q^T x subject to x >= 0, Q symmetric positive definite. Exact in a finite number of steps
-// (projected Gauss-Seidel needed thousands of sweeps here: Q = A^T A has rank 6 plus a tiny ridge).
+// (projected Gauss-Seidel needed thousands of sweeps here: Q = A^T A has rank 6 plus a tiny ridge). The passive
+// set's system is solved from a Cholesky factor grown one row per added variable (above), not refactored.
 void nnls(const MatX& Q, const VecX& q, BalanceQp& ws, VecX& x) {
   const int K = static_cast<int>(q.size());
   x.setZero(K);
@@ -47,25 +83,39 @@ void nnls(const MatX& Q, const VecX& q, BalanceQp& ws, VecX& x) {
   std::vector<char>& in_p = ws.in_passive;
   P.clear();
   in_p.assign(K, 0);
+  ws.L.resize(K, K);
+  ws.z.resize(K);
   const double tol = 1e-10 * (q.cwiseAbs().maxCoeff() + 1e-30);
+  // Warm start: the last solve's passive set (a standing boxer's contacts change slowly). If the problem has the
+  // same size and the set's own solution is positive, start from it; the loop below then checks the optimality
+  // conditions as usual (and goes on adding variables where they fail), so the answer is the same optimum.
+  if (static_cast<int>(ws.warm.size()) > 0 && ws.warm_K == K) {
+    for (int j : ws.warm) P.push_back(j), in_p[j] = 1;
+    const int np = static_cast<int>(P.size());
+    for (int a = 1; a <= np; ++a) chol_append(Q, P, a, ws.L);
+    chol_solve(q, P, np, ws.L, ws.z);
+    if (ws.z.head(np).minCoeff() > 0.0) {
+      for (int a = 0; a < np; ++a) x[P[a]] = ws.z[a];
+    } else {
+      for (int j : P) in_p[j] = 0;
+      P.clear();
+    }
+  }
   for (int outer = 0; outer < 3 * K + 10; ++outer) {
-    ws.w.noalias() = q - Q * x;
+    // w = q - Q x over the passive columns only (x is zero elsewhere)
+    ws.w = q;
+    for (int j : P) ws.w.noalias() -= x[j] * Q.col(j);
     int j = -1;
     double best = tol;
     for (int k = 0; k < K; ++k)
       if (!in_p[k] && ws.w[k] > best) best = ws.w[k], j = k;
     if (j < 0) break;
     P.push_back(j), in_p[j] = 1;
+    chol_append(Q, P, static_cast<int>(P.size()), ws.L);
     for (int inner = 0; inner < 3 * K + 10; ++inner) {
       const int np = static_cast<int>(P.size());
-      ws.Qpp.resize(np, np);
-      ws.qp.resize(np);
-      for (int a = 0; a < np; ++a) {
-        ws.qp[a] = q[P[a]];
-        for (int c = 0; c < np; ++c) ws.Qpp(a, c) = Q(P[a], P[c]);
-      }
-      ws.z = ws.Qpp.ldlt().solve(ws.qp);
-      if (ws.z.minCoeff() > 0.0) {
+      chol_solve(q, P, np, ws.L, ws.z);
+      if (ws.z.head(np).minCoeff() > 0.0) {
         for (int a = 0; a < np; ++a) x[P[a]] = ws.z[a];
         break;
       }
@@ -81,8 +131,11 @@ void nnls(const MatX& Q, const VecX& q, BalanceQp& ws, VecX& x) {
       }
       P.resize(keep);
       if (keep == 0) break;
+      for (int a = 1; a <= keep; ++a) chol_append(Q, P, a, ws.L);  // refactor the smaller set
     }
   }
+  ws.warm.assign(P.begin(), P.end());
+  ws.warm_K = K;
 }
 
 // The root assist's torque from the last six unknowns (+-x, +-y, +-z) and its magnitude.
@@ -133,30 +186,36 @@ void balance_qp_solve(const physics::Model& m, const physics::Data& d, const Bal
   const auto M = ws.M_full.block(b0, b0, n, n);
 
   // ---- The tracking objective over qacc: 1/2 qacc^T H qacc - g^T qacc ----
-  ws.KKT.setZero(n + 6, n + 6);
+  ws.H.setZero(n, n);
   ws.g.setZero(n);
-  auto H = ws.KKT.topLeftCorner(n, n);
+  MatX& H = ws.H;
   H.diagonal().setConstant(p.reg_qacc);
-  auto add_task = [&](const auto& Jt, const Vec3& target, double w) {
-    H.noalias() += w * Jt.transpose() * Jt;
-    ws.g.noalias() += w * Jt.transpose() * target;
+  // w |J_t qacc - target|^2 over the task's columns only (J compacted by block_jacobian).
+  auto add_task = [&](int row0, const Vec3& target, double w) {
+    const std::vector<int>& cols = ws.cols;
+    const int s = static_cast<int>(cols.size());
+    for (int a = 0; a < s; ++a) {
+      const Vec3 ja = ws.J.block<3, 1>(row0, a);
+      ws.g[cols[a]] += w * ja.dot(target);
+      for (int c = 0; c < s; ++c) H(cols[a], cols[c]) += w * ja.dot(ws.J.block<3, 1>(row0, c));
+    }
   };
   for (const QpAngularTask& t : in.angular) {
-    block_jacobian(m, d, t.body, d.com_world[t.body], b0, n, ws.J);
-    add_task(ws.J.topRows<3>(), t.alpha - bias_angular_acceleration(m, d, t.body), t.weight);
+    block_jacobian(m, d, t.body, d.com_world[t.body], b0, n, ws.J, ws.cols);
+    add_task(0, t.alpha - bias_angular_acceleration(m, d, t.body), t.weight);
   }
   for (const QpPointTask& t : in.points) {
-    block_jacobian(m, d, t.body, t.point, b0, n, ws.J);
-    add_task(ws.J.bottomRows<3>(), t.acc - bias_point_acceleration(m, d, t.body, t.point), t.weight);
+    block_jacobian(m, d, t.body, t.point, b0, n, ws.J, ws.cols);
+    add_task(3, t.acc - bias_point_acceleration(m, d, t.body, t.point), t.weight);
   }
   // Contact points stay put (damped): a heavily weighted task rather than an equality, because a flat foot's
   // four corners give 12 dependent rows, and a foot touching at one corner or edge must stay free to roll flat
   // about it (its orientation task does that).
   for (const QpContact& c : in.contacts) {
-    block_jacobian(m, d, c.body, c.point, b0, n, ws.J);
+    block_jacobian(m, d, c.body, c.point, b0, n, ws.J, ws.cols);
     const Vec3 w = ang(d.v_body[c.body]);
     const Vec3 v = lin(d.v_body[c.body]) + w.cross(c.point);
-    add_task(ws.J.bottomRows<3>(), -p.hold_damping * v - bias_point_acceleration(m, d, c.body, c.point), p.w_hold);
+    add_task(3, -p.hold_damping * v - bias_point_acceleration(m, d, c.body, c.point), p.w_hold);
   }
 
   // ---- Contact forces: pyramid edges u (f_c = sum beta u, beta >= 0), their wrench about the com (A) and
@@ -170,22 +229,26 @@ void balance_qp_solve(const physics::Model& m, const physics::Data& d, const Bal
     const Vec3 t1 = nrm.unitOrthogonal(), t2 = nrm.cross(t1);
     const Vec3 r = ct.point - com;
     const Vec3 u[4] = {nrm + ct.mu * t1, nrm - ct.mu * t1, nrm + ct.mu * t2, nrm - ct.mu * t2};
-    block_jacobian(m, d, ct.body, ct.point, b0, n, ws.J);
+    block_jacobian(m, d, ct.body, ct.point, b0, n, ws.J, ws.cols);
     for (int k = 0; k < 4; ++k) {
       ws.basis[4 * c + k] = u[k];
       ws.A.block<3, 1>(0, 4 * c + k) = std::sqrt(p.w_force) * u[k];
       ws.A.block<3, 1>(3, 4 * c + k) = std::sqrt(p.w_moment) * r.cross(u[k]);
-      ws.G.col(4 * c + k).noalias() = ws.J.bottomRows<3>().transpose() * u[k];
+      ws.G.col(4 * c + k).setZero();
+      for (int a = 0; a < static_cast<int>(ws.cols.size()); ++a)
+        ws.G(ws.cols[a], 4 * c + k) = ws.J.block<3, 1>(3, a).dot(u[k]);
     }
   }
   // Root assist: a pure torque on the root body, a moment about the com like any other.
   if (na > 0) {
-    block_jacobian(m, d, in.root_body, d.x[in.root_body].p, b0, n, ws.J);
+    block_jacobian(m, d, in.root_body, d.x[in.root_body].p, b0, n, ws.J, ws.cols);
     for (int k = 0; k < 6; ++k) {
       const Vec3 e = (k % 2 == 0 ? 1.0 : -1.0) * Vec3::Unit(k / 2);
       ws.A.block<3, 1>(0, 4 * nc + k).setZero();
       ws.A.block<3, 1>(3, 4 * nc + k) = std::sqrt(p.w_moment) * e;
-      ws.G.col(4 * nc + k).noalias() = ws.J.topRows<3>().transpose() * e;
+      ws.G.col(4 * nc + k).setZero();
+      for (int a = 0; a < static_cast<int>(ws.cols.size()); ++a)
+        ws.G(ws.cols[a], 4 * nc + k) = ws.J.block<3, 1>(0, a).dot(e);
     }
   }
 
@@ -197,15 +260,30 @@ void balance_qp_solve(const physics::Model& m, const physics::Data& d, const Bal
     const int dof = b0 + k;
     c_root[k] = ws.c_full[dof] + m.bodies[m.dof_body[dof]].damping * d.v[dof];
   }
-  ws.KKT.block(n, 0, 6, n) = M.topRows(6);
-  for (int k = 0; k < 6; ++k) ws.KKT(n + k, k) += m.bodies[m.dof_body[b0 + k]].armature;
-  ws.KKT.topRightCorner(n, 6) = ws.KKT.bottomLeftCorner(6, n).transpose();
-  ws.lu.compute(ws.KKT);
-  ws.rhs.setZero(n + 6, K + 1);
-  ws.rhs.col(0).head(n) = ws.g;
-  ws.rhs.col(0).tail<6>() = -c_root;
-  ws.rhs.bottomRightCorner(6, K) = ws.G.topRows(6);
-  ws.sol = ws.lu.solve(ws.rhs);
+  // Solved by the range-space (Schur complement) method (Nocedal & Wright sec. 16.2), H being positive definite
+  // (the qacc ridge): with Y = H^-1 E^T and S = E Y (6 x 6, positive definite: E has full row rank),
+  //   lambda = S^-1 (E H^-1 t - b),  qacc = H^-1 t - Y lambda.
+  // For q0: t = g, b = -c_root. For Q1: t = 0, b = F (the pyramid edges' root rows), so Q1 = Y S^-1 F. Two
+  // Cholesky factors (n and 6) instead of an LU of the (n + 6) KKT matrix with K + 1 right-hand sides.
+  ws.E = M.topRows(6);
+  for (int k = 0; k < 6; ++k) ws.E(k, k) += m.bodies[m.dof_body[b0 + k]].armature;
+  ws.llt_H.compute(H);
+  ws.Y = ws.E.transpose();
+  ws.llt_H.solveInPlace(ws.Y);
+  ws.S.noalias() = ws.E * ws.Y;
+  ws.llt_S.compute(ws.S);
+  ws.sol.resize(n, K + 1);
+  ws.sol.col(0) = ws.g;
+  ws.llt_H.solveInPlace(ws.sol.col(0));
+  ws.lambda.noalias() = ws.E * ws.sol.col(0);
+  ws.lambda += c_root;
+  ws.llt_S.solveInPlace(ws.lambda);
+  ws.sol.col(0).noalias() -= ws.Y * ws.lambda;
+  if (K > 0) {
+    ws.SF = ws.G.topRows(6);
+    ws.llt_S.solveInPlace(ws.SF);
+    ws.sol.rightCols(K).noalias() = ws.Y * ws.SF;
+  }
   const auto q0 = ws.sol.col(0).head(n);
   const auto Q1 = ws.sol.topRightCorner(n, K);
 
@@ -216,21 +294,24 @@ void balance_qp_solve(const physics::Model& m, const physics::Data& d, const Bal
   ws.b.tail<3>() = std::sqrt(p.w_moment) * in.momentum_rate;
   ws.beta.setZero(K);
   if (K > 0) {
-    ws.HQ1.noalias() = H.selfadjointView<Eigen::Upper>() * Q1;
-    ws.Q.noalias() = Q1.transpose() * ws.HQ1;
+    // Q1 = Y S^-1 F has rank 6, and H Y = E^T, so Q1^T H Q1 = SF^T E Y SF = SF^T F (S SF = F): a 6-deep product
+    // instead of two n-deep ones, and Q1^T w = SF^T (Y^T w).
+    ws.Q.noalias() = ws.SF.transpose() * ws.G.topRows(6);
     ws.Q.noalias() += ws.A.transpose() * ws.A;
     ws.Q = 0.5 * (ws.Q + ws.Q.transpose()).eval();
-    ws.w.noalias() = H.selfadjointView<Eigen::Upper>() * q0;
+    ws.w.noalias() = H * q0;
     ws.w -= ws.g;
     ws.q.noalias() = ws.A.transpose() * ws.b;
-    ws.q.noalias() -= Q1.transpose() * ws.w;
+    ws.lambda.noalias() = ws.Y.transpose() * ws.w;
+    ws.q.noalias() -= ws.SF.transpose() * ws.lambda;
     // Joint torques priced too (minimum effort): tau_joints = T1 beta + t0 is affine in beta like qacc. Without it
     // the torques are free in the plan, and a body touching the crates at several links (a knee and a foot) could be
     // planned with large opposing contact forces (the ridge alone let a knee landing ask 38 kN m: walk seed 6,
     // root assist on, 192 s, the simulation then diverged).
     if (p.w_torque > 0.0 && n > 6) {
       const int nj = n - 6;
-      ws.T1.noalias() = M.bottomRows(nj) * Q1;
+      ws.HQ1.noalias() = M.bottomRows(nj) * ws.Y;  // (M Q1)_joints = (M_joints Y) S^-1 F, 6 deep again
+      ws.T1.noalias() = ws.HQ1 * ws.SF;
       ws.T1 -= ws.G.bottomRows(nj);
       ws.t0.noalias() = M.bottomRows(nj) * q0;
       for (int k = 0; k < nj; ++k) {

@@ -32,7 +32,7 @@
 //
 // All quantities world frame; the articulation is a contiguous DoF block [dof_begin, dof_end) whose first six
 // DoFs are the free root joint. Uses forward_kinematics results (x, com_world, v_body, cdof, cdof_dot).
-#include <Eigen/LU>
+#include <Eigen/Cholesky>
 #include <vector>
 
 #include "engine/physics/data.h"
@@ -112,17 +112,23 @@ struct BalanceQpResult {
 
 // Workspace (sized on first use and reused; Eigen reallocates when the number of contacts changes).
 struct BalanceQp {
-  MatX M_full, J, KKT, A, G, Q, rhs, sol, HQ1;  // G: generalised force of each pyramid edge (J_c^T u), n x K
+  MatX M_full, J, H, A, G, Q, sol, HQ1;  // G: generalised force of each pyramid edge (J_c^T u), n x K
+  // the equality-constrained solve (range-space method): E = root rows of M, Y = H^-1 E^T, S = E Y, SF = S^-1 F
+  MatX E, Y, S, SF;
+  VecX lambda;
+  Eigen::LLT<MatX> llt_H, llt_S;
   VecX c_full, beta, q, g, tau_assist, t0, beta_fit;
   MatX T1;  // joint torques as an affine function of beta: T1 beta + t0
   Eigen::Matrix<double, 6, 1> b;
-  Eigen::PartialPivLU<MatX> lu;
   std::vector<Vec3> basis;
   // the active-set NNLS in beta
   std::vector<int> passive;
   std::vector<char> in_passive;
-  MatX Qpp;
-  VecX qp, z, w;
+  MatX L;     // Cholesky factor of Q over the passive set (nnls)
+  std::vector<int> warm;  // the last solve's passive set and its problem size (nnls warm start)
+  int warm_K = -1;
+  VecX z, w;
+  std::vector<int> cols;  // a task's Jacobian columns (block indices of its body's ancestor DoFs)
 };
 
 void balance_qp_solve(const physics::Model& m, const physics::Data& d, const BalanceQpInput& in,
