@@ -6,6 +6,7 @@
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "engine/physics/dynamics.h"
 #include "engine/physics/spatial.h"
@@ -29,7 +30,7 @@ Vec6 bias_spatial_acceleration(const physics::Model& m, const physics::Data& d, 
 // the block, listed in `cols` as block indices): angular rows 0-2, the linear velocity of a point fixed to it rows
 // 3-5. A boxer's hand depends on 18 of 37 DoFs, a foot on 15: the task products below run over those only.
 void block_jacobian(const physics::Model& m, const physics::Data& d, int body, const Vec3& p, int b0, int n,
-                    MatX& J, std::vector<int>& cols) {
+                    QpMat6N& J, std::vector<int>& cols) {
   cols.clear();
   for (int k = m.body_last_dof[body]; k >= 0; k = m.dof_parent[k])
     if (k >= b0 && k < b0 + n) cols.push_back(k - b0);
@@ -44,7 +45,7 @@ void block_jacobian(const physics::Model& m, const physics::Data& d, int body, c
 // Cholesky factor of Q restricted to the passive set, in P's order (L lower, np x np in ws.L): appending P's last
 // variable adds one row, L_new = [L 0; l^T d] with L l = Q_P,j and d = sqrt(Q_jj - l.l) (O(np^2), Golub & Van Loan
 // sec. 4.2); a variable leaving rebuilds the factor (rare: the inner loop's drops).
-void chol_append(const MatX& Q, const std::vector<int>& P, int np, MatX& L) {
+void chol_append(const QpMatKK& Q, const std::vector<int>& P, int np, QpMatKK& L) {
   const int j = P[np - 1];
   double dd = Q(j, j);
   for (int a = 0; a < np - 1; ++a) {
@@ -59,7 +60,7 @@ void chol_append(const MatX& Q, const std::vector<int>& P, int np, MatX& L) {
 }
 
 // z = Q_PP^-1 q_P from the factor: L y = q_P, L^T z = y.
-void chol_solve(const VecX& q, const std::vector<int>& P, int np, const MatX& L, VecX& z) {
+void chol_solve(const QpVecK& q, const std::vector<int>& P, int np, const QpMatKK& L, QpVecK& z) {
   for (int a = 0; a < np; ++a) {
     double s = q[P[a]];
     for (int c = 0; c < a; ++c) s -= L(a, c) * z[c];
@@ -76,7 +77,7 @@ void chol_solve(const VecX& q, const std::vector<int>& P, int np, const MatX& L,
 // min 1/2 x^T Q x - q^T x subject to x >= 0, Q symmetric positive definite. Exact in a finite number of steps
 // (projected Gauss-Seidel needed thousands of sweeps here: Q = A^T A has rank 6 plus a tiny ridge). The passive
 // set's system is solved from a Cholesky factor grown one row per added variable (above), not refactored.
-void nnls(const MatX& Q, const VecX& q, BalanceQp& ws, VecX& x) {
+void nnls(const QpMatKK& Q, const QpVecK& q, BalanceQp& ws, QpVecK& x) {
   const int K = static_cast<int>(q.size());
   x.setZero(K);
   std::vector<int>& P = ws.passive;
@@ -103,12 +104,12 @@ void nnls(const MatX& Q, const VecX& q, BalanceQp& ws, VecX& x) {
   }
   for (int outer = 0; outer < 3 * K + 10; ++outer) {
     // w = q - Q x over the passive columns only (x is zero elsewhere)
-    ws.w = q;
-    for (int j : P) ws.w.noalias() -= x[j] * Q.col(j);
+    ws.wk = q;
+    for (int j : P) ws.wk.noalias() -= x[j] * Q.col(j);
     int j = -1;
     double best = tol;
     for (int k = 0; k < K; ++k)
-      if (!in_p[k] && ws.w[k] > best) best = ws.w[k], j = k;
+      if (!in_p[k] && ws.wk[k] > best) best = ws.wk[k], j = k;
     if (j < 0) break;
     P.push_back(j), in_p[j] = 1;
     chol_append(Q, P, static_cast<int>(P.size()), ws.L);
@@ -139,12 +140,12 @@ void nnls(const MatX& Q, const VecX& q, BalanceQp& ws, VecX& x) {
 }
 
 // The root assist's torque from the last six unknowns (+-x, +-y, +-z) and its magnitude.
-Vec3 assist_torque(const VecX& beta, int nc) {
+Vec3 assist_torque(const QpVecK& beta, int nc) {
   Vec3 a = Vec3::Zero();
   for (int k = 0; k < 6; ++k) a += beta[4 * nc + k] * (k % 2 == 0 ? 1.0 : -1.0) * Vec3::Unit(k / 2);
   return a;
 }
-double assist_norm(const VecX& beta, int nc) { return assist_torque(beta, nc).norm(); }
+double assist_norm(const QpVecK& beta, int nc) { return assist_torque(beta, nc).norm(); }
 
 }  // namespace
 
@@ -164,7 +165,14 @@ Vec3 bias_point_acceleration(const physics::Model& m, const physics::Data& d, in
 void balance_qp_solve(const physics::Model& m, const physics::Data& d, const BalanceQpInput& in,
                       const BalanceQpParams& p, BalanceQp& ws, BalanceQpResult& out) {
   const int b0 = in.dof_begin, n = in.dof_end - in.dof_begin;
-  const int nc = static_cast<int>(in.contacts.size());
+  if (n > kQpMaxDofs || n < 6) {  // not an articulation this workspace can hold: no plan, no torque
+    out.qacc.setZero(std::max(n, 0)), out.tau.setZero(std::max(n, 0));
+    out.contact_force.clear();
+    out.root_residual = std::numeric_limits<double>::quiet_NaN();
+    return;
+  }
+  // Contacts past the workspace's capacity are left out of the plan (balance_qp.h).
+  const int nc = std::min(static_cast<int>(in.contacts.size()), kQpMaxContacts);
   // Unknowns of the reduced problem: 4 pyramid edges per contact, then (root assist on) +-x, +-y, +-z torques.
   const int na = p.w_root_assist > 0.0 && p.max_root_assist > 0.0 ? 6 : 0;
   const int K = 4 * nc + na;
@@ -188,7 +196,7 @@ void balance_qp_solve(const physics::Model& m, const physics::Data& d, const Bal
   // ---- The tracking objective over qacc: 1/2 qacc^T H qacc - g^T qacc ----
   ws.H.setZero(n, n);
   ws.g.setZero(n);
-  MatX& H = ws.H;
+  QpMatNN& H = ws.H;
   H.diagonal().setConstant(p.reg_qacc);
   // w |J_t qacc - target|^2 over the task's columns only (J compacted by block_jacobian).
   auto add_task = [&](int row0, const Vec3& target, double w) {
@@ -211,7 +219,8 @@ void balance_qp_solve(const physics::Model& m, const physics::Data& d, const Bal
   // Contact points stay put (damped): a heavily weighted task rather than an equality, because a flat foot's
   // four corners give 12 dependent rows, and a foot touching at one corner or edge must stay free to roll flat
   // about it (its orientation task does that).
-  for (const QpContact& c : in.contacts) {
+  for (int ci = 0; ci < nc; ++ci) {
+    const QpContact& c = in.contacts[ci];
     block_jacobian(m, d, c.body, c.point, b0, n, ws.J, ws.cols);
     const Vec3 w = ang(d.v_body[c.body]);
     const Vec3 v = lin(d.v_body[c.body]) + w.cross(c.point);
@@ -298,7 +307,8 @@ void balance_qp_solve(const physics::Model& m, const physics::Data& d, const Bal
     // instead of two n-deep ones, and Q1^T w = SF^T (Y^T w).
     ws.Q.noalias() = ws.SF.transpose() * ws.G.topRows(6);
     ws.Q.noalias() += ws.A.transpose() * ws.A;
-    ws.Q = 0.5 * (ws.Q + ws.Q.transpose()).eval();
+    for (int i = 0; i < K; ++i)  // symmetrise in place (round-off)
+      for (int j = i + 1; j < K; ++j) ws.Q(i, j) = ws.Q(j, i) = 0.5 * (ws.Q(i, j) + ws.Q(j, i));
     ws.w.noalias() = H * q0;
     ws.w -= ws.g;
     ws.q.noalias() = ws.A.transpose() * ws.b;
@@ -390,7 +400,8 @@ void balance_qp_solve(const physics::Model& m, const physics::Data& d, const Bal
   // gets the clamped torque and the body falls short of qacc there.
   ws.tau_assist.setZero(6);
   if (na > 0) {
-    ws.tau_assist = (ws.G.topRows(6).rightCols(na) * ws.beta.tail(na)) * scale;
+    ws.tau_assist.noalias() = ws.G.topRows(6).rightCols(na) * ws.beta.tail(na);
+    ws.tau_assist *= scale;
     out.root_residual = (out.tau.head<6>() - ws.tau_assist / scale).norm();
     out.tau.head<6>() = ws.tau_assist;
   } else {

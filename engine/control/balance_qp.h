@@ -110,25 +110,56 @@ struct BalanceQpResult {
   double root_residual = 0.0;
 };
 
-// Workspace (sized on first use and reused; Eigen reallocates when the number of contacts changes).
+// Workspace: Eigen matrices with compile-time maximum sizes (storage inside the struct), so no solve allocates
+// whatever the number of contacts (no per-tick allocation: tests/game/world_alloc_test.cpp). Limits: an
+// articulation of at most kQpMaxDofs DoFs; contacts past kQpMaxContacts are left out of the plan (the first ones
+// kept; a standing boxer has 8).
+inline constexpr int kQpMaxDofs = 64;
+inline constexpr int kQpMaxContacts = 30;  // Q (126 x 126) within Eigen's 128 KiB fixed-size limit
+inline constexpr int kQpMaxUnknowns = 4 * kQpMaxContacts + 6;  // pyramid edges + the root assist's six
+using QpMatNN = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kQpMaxDofs, kQpMaxDofs>;
+using QpMatNK = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kQpMaxDofs, kQpMaxUnknowns + 1>;
+using QpMatKK = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kQpMaxUnknowns, kQpMaxUnknowns>;
+using QpMat6K = Eigen::Matrix<double, 6, Eigen::Dynamic, 0, 6, kQpMaxUnknowns>;
+using QpMat6N = Eigen::Matrix<double, 6, Eigen::Dynamic, 0, 6, kQpMaxDofs>;
+using QpMatN6 = Eigen::Matrix<double, Eigen::Dynamic, 6, 0, kQpMaxDofs, 6>;
+using QpVecK = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kQpMaxUnknowns, 1>;
+using QpVecN = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kQpMaxDofs, 1>;
+
 struct BalanceQp {
-  MatX M_full, J, H, A, G, Q, sol, HQ1;  // G: generalised force of each pyramid edge (J_c^T u), n x K
+  MatX M_full;   // the whole model's M (same size every call)
+  VecX c_full;
+  QpMat6N J;     // a task's Jacobian, compacted to its columns
+  QpMatNN H;
+  QpMat6K A;     // the pyramid edges' wrench about the com
+  QpMatNK G;     // generalised force of each pyramid edge (J_c^T u), n x K
+  QpMatKK Q;     // the reduced problem in beta
+  QpMatNK sol;   // [q0 Q1]: qacc = q0 + Q1 beta
+  QpMatNK T1;    // joint torques as an affine function of beta: T1 beta + t0 (rows: joints)
+  QpMatN6 HQ1;   // M_joints Y
   // the equality-constrained solve (range-space method): E = root rows of M, Y = H^-1 E^T, S = E Y, SF = S^-1 F
-  MatX E, Y, S, SF;
-  VecX lambda;
-  Eigen::LLT<MatX> llt_H, llt_S;
-  VecX c_full, beta, q, g, tau_assist, t0, beta_fit;
-  MatX T1;  // joint torques as an affine function of beta: T1 beta + t0
+  QpMat6N E;
+  QpMatN6 Y;
+  Eigen::Matrix<double, 6, 6> S;
+  QpMat6K SF;
+  Eigen::Matrix<double, 6, 1> lambda;
+  Eigen::LLT<QpMatNN> llt_H;
+  Eigen::LLT<Eigen::Matrix<double, 6, 6>> llt_S;
+  QpVecK beta, q, beta_fit, z, wk;  // wk: the NNLS gradient q - Q x
+  QpVecN g, w, t0, tau_assist;
   Eigen::Matrix<double, 6, 1> b;
   std::vector<Vec3> basis;
   // the active-set NNLS in beta
   std::vector<int> passive;
   std::vector<char> in_passive;
-  MatX L;     // Cholesky factor of Q over the passive set (nnls)
+  QpMatKK L;     // Cholesky factor of Q over the passive set (nnls)
   std::vector<int> warm;  // the last solve's passive set and its problem size (nnls warm start)
   int warm_K = -1;
-  VecX z, w;
   std::vector<int> cols;  // a task's Jacobian columns (block indices of its body's ancestor DoFs)
+  BalanceQp() {
+    basis.reserve(kQpMaxUnknowns), passive.reserve(kQpMaxUnknowns), in_passive.reserve(kQpMaxUnknowns);
+    warm.reserve(kQpMaxUnknowns), cols.reserve(kQpMaxDofs);
+  }
 };
 
 void balance_qp_solve(const physics::Model& m, const physics::Data& d, const BalanceQpInput& in,

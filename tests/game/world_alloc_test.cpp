@@ -1,0 +1,75 @@
+// The whole world step allocates nothing once warm: physics, both boxers' control (servo, balance QP, steps),
+// pose sources and the motion-graph walkers (issue: no allocation per tick). Counts operator new and malloc
+// (Eigen's dynamic storage) with the linker's --wrap=malloc (tests/game/CMakeLists.txt). BOXING_ALLOC_TRACE=1
+// prints the call stacks of the first N allocations, to find them.
+#include <execinfo.h>
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <new>
+
+#include "game/world.h"
+
+namespace {
+bool g_count = false;
+long g_allocs = 0;
+int g_traced = 0;
+
+void note_alloc() {
+  if (!g_count) return;
+  ++g_allocs;
+  static const bool trace = std::getenv("BOXING_ALLOC_TRACE") != nullptr;
+  static const int limit = trace ? std::atoi(std::getenv("BOXING_ALLOC_TRACE")) : 0;
+  if (trace && g_traced < limit) {
+    g_count = false;  // backtrace itself may allocate
+    ++g_traced;
+    void* frames[24];
+    const int n = backtrace(frames, 24);
+    std::fprintf(stderr, "---- allocation %d\n", g_traced);
+    backtrace_symbols_fd(frames, n, 2);
+    g_count = true;
+  }
+}
+}  // namespace
+
+extern "C" void* __real_malloc(size_t);
+extern "C" void* __wrap_malloc(size_t n) {
+  note_alloc();
+  return __real_malloc(n);
+}
+void* operator new(std::size_t n) {
+  note_alloc();
+  void* p = __real_malloc(n ? n : 1);
+  if (!p) throw std::bad_alloc();
+  return p;
+}
+void* operator new[](std::size_t n) { return operator new(n); }
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+
+namespace boxing {
+namespace {
+
+TEST(WorldAlloc, MatchStepAllocatesNothingOnceWarm) {
+  Options o;
+  o.headless = true;
+  o.scenario = "match";
+  o.seed = 3;
+  auto w = make_world(o);
+  ASSERT_TRUE(w) << w.error();
+  World& world = **w;
+  // Warm: 8 s of the match (every workspace, contact list and walker buffer reaches its working size).
+  for (int i = 0; i < 8 * 240; ++i) step_world(world);
+  g_allocs = 0;
+  g_count = true;
+  for (int i = 0; i < 8 * 240; ++i) step_world(world);
+  g_count = false;
+  EXPECT_EQ(g_allocs, 0) << "allocations in 8 s of two boxers on graph walks (BOXING_ALLOC_TRACE=N prints the stacks of the first N)";
+  EXPECT_FALSE(world.boxers[0].metrics.fell);  // the measured stretch was the normal fight, not a body lying still
+}
+
+}  // namespace
+}  // namespace boxing
