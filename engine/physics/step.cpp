@@ -2,6 +2,8 @@
 #include "engine/physics/step.h"
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <cmath>
 
 #include "engine/physics/dynamics.h"
@@ -297,10 +299,16 @@ void passive_forces(const Model& m, Data& d) {
   }
 }
 
-void forward_dynamics(const Model& m, Data& d) {
+void mass_matrix(const Model& m, Data& d) {
   if (m.nv == 0) return;
   const double h = m.dt;
-  crba(m, d, d.M);
+  crba(m, d, d.M_crba);
+  // M = M_crba + implicit terms. crba writes only the DoF blocks (zero elsewhere in both matrices), so
+  // copying the blocks is the whole copy; the values are bit-for-bit those crba would write into M.
+  for (size_t blk = 0; blk + 1 < m.block_begin.size(); ++blk) {
+    const int b0 = m.block_begin[blk], nb = m.block_begin[blk + 1] - b0;
+    d.M.block(b0, b0, nb, nb) = d.M_crba.block(b0, b0, nb, nb);
+  }
   // implicit damping / springs and armature on the diagonal (see step.h)
   for (size_t i = 1; i < m.bodies.size(); ++i) {
     const Body& b = m.bodies[i];
@@ -308,13 +316,47 @@ void forward_dynamics(const Model& m, Data& d) {
     for (int k = 0; k < b.nv; ++k) d.M(b.v_index + k, b.v_index + k) += add;
   }
   factor_ltdl(m, d.M, d.LD);
-  bias_forces(m, d, d.bias);
+}
+
+void compute_bias(const Model& m, Data& d) {
+  if (m.nv == 0) return;
+  rigid_bias_forces(m, d, d.qfrc_bias);
+  d.bias = d.qfrc_bias;
+}
+
+namespace {
+// true when every applied force / torque is +0.0 bit for bit (clear_applied's value): then
+// bias_forces() = rigid_bias_forces() exactly (x - (+0) == x for every double x, including -0), so the
+// second RNEA can be skipped without changing a bit.
+bool no_applied(const Data& d) {
+  for (size_t i = 0; i < d.applied_force.size(); ++i)
+    for (int k = 0; k < 3; ++k)
+      if (std::bit_cast<uint64_t>(d.applied_force[i][k]) != 0 || std::bit_cast<uint64_t>(d.applied_torque[i][k]) != 0)
+        return false;
+  return true;
+}
+}  // namespace
+
+void unconstrained_velocity(const Model& m, Data& d) {
+  if (m.nv == 0) return;
+  const double h = m.dt;
+  // c with the applied forces as they are now (written by control after step1)
+  if (no_applied(d))
+    d.bias = d.qfrc_bias;
+  else
+    bias_forces(m, d, d.bias);
   for (int k = 0; k < m.nv; ++k) d.v_free[k] = h * (d.tau[k] + d.passive[k] - d.bias[k]);
   solve_ltdl(m, d.LD, d.v_free);
   for (int k = 0; k < m.nv; ++k) {
     d.qacc[k] = d.v_free[k] / h;
     d.v_free[k] += d.v[k];
   }
+}
+
+void forward_dynamics(const Model& m, Data& d) {
+  mass_matrix(m, d);
+  compute_bias(m, d);
+  unconstrained_velocity(m, d);
 }
 
 void solve_constraints(const Model& m, Data& d) {
@@ -517,14 +559,24 @@ void integrate(const Model& m, Data& d) {
   d.time += h;
 }
 
-void step(const Model& m, Data& d) {
+void step1(const Model& m, Data& d) {
   forward_kinematics(m, d);
   collide(m, d);
   compute_constraints(m, d);
+  mass_matrix(m, d);
+  compute_bias(m, d);
+}
+
+void step2(const Model& m, Data& d) {
   passive_forces(m, d);
-  forward_dynamics(m, d);
+  unconstrained_velocity(m, d);
   solve_constraints(m, d);
   integrate(m, d);
+}
+
+void step(const Model& m, Data& d) {
+  step1(m, d);
+  step2(m, d);
 }
 
 void apply_force_at_point(const Model& m, Data& d, int body, const Vec3& f, const Vec3& p) {
