@@ -24,6 +24,8 @@ struct ConstraintRow {
   enum Kind : uint8_t { Normal, Friction, Limit } kind = Normal;
   int contact = -1;   // contact index (Normal / Friction), -1 for limits
   int partner = -1;   // Friction: index of the other tangent row of the pair (first row of the pair)
+  double C = 0.0;     // position error: gap (> 0 apart, < 0 violated) of a contact normal / limit row
+  // soft parameters, set from C by solve_constraints' prepare stage (prepare_constraints)
   double bias = 0.0;  // target velocity term (J v + bias -> 0)
   double mass_scale = 1.0, impulse_scale = 0.0;  // Box2D v3 soft step
   double inv_diag = 0.0;  // 1 / ((J M^-1 J^T)_ii + solver.regularization)

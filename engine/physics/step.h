@@ -10,7 +10,7 @@
 //
 // STATE AFTER step1 (q, v, time unchanged): d.x / com_world / v_body / cdof / cdof_dot / cinert for the
 // current q, v; d.contacts of the current q (with warm-start impulses of the last step) and their
-// constraint rows (J, soft parameters); d.M_crba = M(q) (CRBA
+// constraint rows (J; soft parameters come in solve_constraints' prepare stage); d.M_crba = M(q) (CRBA
 // only), d.qfrc_bias = c(q, v) without applied forces, d.M = M_crba + armature + dt D + dt^2 K, d.LD its
 // factor, d.bias = qfrc_bias. Anything that changes q or v between step1 and step2 makes these stale.
 // STATE AFTER step2 / step(): q, v, time advanced; d.x / contacts / M ... are still those of the START of
@@ -71,7 +71,18 @@ void passive_forces(const Model& m, Data& d);       // d.passive = -D v - K (q +
 // step2: d.bias = c with the current applied forces; v_free = v + dt M^-1 (tau + passive - bias); qacc
 void unconstrained_velocity(const Model& m, Data& d);
 void forward_dynamics(const Model& m, Data& d);     // mass_matrix + compute_bias + unconstrained_velocity
-void solve_constraints(const Model& m, Data& d);    // M^-1 J^T, Delassus diagonal, PGS; d.v; forces
+// step2: the constraint solve, Box2D v3's stages in order: prepare_constraints -> warm_start ->
+// solve_pgs -> store_impulses. v_free -> d.v; contact impulses / forces; qacc.
+void solve_constraints(const Model& m, Data& d);
+//   prepare: d.v = v_free (d.vtmp = v at the start); soft params (bias, mass/impulse scale) from each
+//   row's C; W = M^-1 J^T per row (packed over its DoF range); Delassus diagonal; friction coupling
+void prepare_constraints(const Model& m, Data& d);
+//   warm start: last step's impulses clamped into the feasible set, applied: v += W lambda
+void warm_start(const Model& m, Data& d);
+//   solve: solver.iterations projected Gauss-Seidel sweeps (soft step, Coulomb cone / pyramid)
+void solve_pgs(const Model& m, Data& d);
+//   store impulses: contact normal / friction impulses (next step's warm start) and forces; qacc
+void store_impulses(const Model& m, Data& d);
 void integrate(const Model& m, Data& d);            // q += dt * v on the manifold; time += dt
 
 // inputs (persist until clear_applied). apply_force_at_point uses d.com_world (last kinematics).
