@@ -24,6 +24,8 @@ struct ConstraintRow {
   enum Kind : uint8_t { Normal, Friction, Limit } kind = Normal;
   int contact = -1;   // contact index (Normal / Friction), -1 for limits
   int partner = -1;   // Friction: index of the other tangent row of the pair (first row of the pair)
+  double C = 0.0;     // position error: gap (> 0 apart, < 0 violated) of a contact normal / limit row
+  // soft parameters, set from C by solve_constraints' prepare stage (prepare_constraints)
   double bias = 0.0;  // target velocity term (J v + bias -> 0)
   double mass_scale = 1.0, impulse_scale = 0.0;  // Box2D v3 soft step
   double inv_diag = 0.0;  // 1 / ((J M^-1 J^T)_ii + solver.regularization)
@@ -67,9 +69,16 @@ struct Data {
   std::vector<Vec6> ws_p;               // articulated bias forces per body
   std::vector<Mat6> ws_U, ws_Dinv;      // ABA: U = I^A S, D^-1 (top-left nd x nd) per body
   std::vector<Vec6> ws_u, ws_c;         // ABA: u = tau - S^T p^A, c = Sdot qdot per body
-  MatX M;                               // after a step: CRBA M + armature + dt D + dt^2 K (step.h)
-  MatX LD;                              // LTDL factor of M (RBDA 6.5): strict lower L, diagonal D
-  VecX bias, vtmp, vtmp2, v_free, passive;
+  // ---- filled by step1() (mass_matrix, compute_bias), for the state q, v at the START of the step ----
+  // Physical quantities a controller (balance QP, inverse dynamics) reads between step1 and step2:
+  MatX M_crba;     // joint-space inertia M(q) by CRBA only (no armature, no implicit terms), nv x nv;
+                   // zero outside the DoF blocks (Model::block_begin)
+  VecX qfrc_bias;  // c(q, v): gravity + Coriolis/centrifugal, WITHOUT applied forces (rigid_bias_forces)
+  // What the step itself solves with:
+  MatX M;          // M_crba + armature + dt D + dt^2 K (implicit damping / springs, step.h)
+  MatX LD;         // LTDL factor of M (RBDA 6.5): strict lower L, diagonal D
+  VecX bias;       // after step1: = qfrc_bias; after step2: c including the applied forces (what was used)
+  VecX vtmp, vtmp2, v_free, passive;
   // constraint rows: J sparse (only ancestor DoFs of the two bodies are nonzero; an index may repeat
   // when the bodies share ancestors), M^-1 J^T dense over each row's [j_begin, j_end) (packed; capacity
   // max_rows x nv)

@@ -89,7 +89,10 @@ void forward_kinematics(const Model& m, Data& d) {
 }
 
 // RNEA, RBDA Table 5.1 with X = 1 (absolute coordinates) and a_0 = -g (eq. 5.20 trick).
-void rnea(const Model& m, const Data& d_in, const VecX& qacc, VecX& tau) {
+// kApplied = false leaves out the user's applied forces (rigid_bias_forces); the kApplied = true path is
+// the original expression, unchanged.
+template <bool kApplied>
+void rnea_impl(const Model& m, const Data& d_in, const VecX& qacc, VecX& tau) {
   Data& d = const_cast<Data&>(d_in);  // workspace only (ws_a, ws_f); state untouched
   const int nb = static_cast<int>(m.bodies.size());
   d.ws_a[0] = gravity_acc(m);
@@ -103,7 +106,10 @@ void rnea(const Model& m, const Data& d_in, const VecX& qacc, VecX& tau) {
     d.ws_a[i] = a;
     const Mat6& I = d.cinert[i];
     const Vec6& v = d.v_body[i];
-    d.ws_f[i] = I * a + cross_force(v, I * v) - applied_wrench(d, i);
+    if constexpr (kApplied)
+      d.ws_f[i] = I * a + cross_force(v, I * v) - applied_wrench(d, i);
+    else
+      d.ws_f[i] = I * a + cross_force(v, I * v);
   }
   for (int i = nb - 1; i >= 1; --i) {
     const Body& b = m.bodies[i];
@@ -112,10 +118,18 @@ void rnea(const Model& m, const Data& d_in, const VecX& qacc, VecX& tau) {
   }
 }
 
+void rnea(const Model& m, const Data& d, const VecX& qacc, VecX& tau) { rnea_impl<true>(m, d, qacc, tau); }
+
 void bias_forces(const Model& m, const Data& d, VecX& c) {
   Data& dd = const_cast<Data&>(d);
   dd.vtmp2.setZero();
   rnea(m, d, dd.vtmp2, c);
+}
+
+void rigid_bias_forces(const Model& m, const Data& d, VecX& c) {
+  Data& dd = const_cast<Data&>(d);
+  dd.vtmp2.setZero();
+  rnea_impl<false>(m, d, dd.vtmp2, c);
 }
 
 // CRBA, RBDA Table 6.2 (X = 1): composite inertias, then M_kj = S_k . (Ic_i S_j) up the ancestor chain.

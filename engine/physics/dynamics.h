@@ -23,6 +23,10 @@ void forward_kinematics(const Model& m, Data& d);
 void rnea(const Model& m, const Data& d, const VecX& qacc, VecX& tau_out);
 // Bias forces c = rnea(qacc = 0).
 void bias_forces(const Model& m, const Data& d, VecX& c);
+// The rigid-body part of c only: gravity + Coriolis/centrifugal, WITHOUT the applied forces
+// (= bias_forces with applied_force/applied_torque all zero). What a balance QP's M qacc + c = tau + J^T f
+// needs; step1() stores it in Data::qfrc_bias.
+void rigid_bias_forces(const Model& m, const Data& d, VecX& c);
 // Composite Rigid Body Algorithm, RBDA Table 6.2: joint-space inertia M (nv x nv, symmetric).
 // (Only the rigid-body part; armature / implicit damping are added by the step.)
 void crba(const Model& m, const Data& d, MatX& M);

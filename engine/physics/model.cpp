@@ -131,6 +131,8 @@ Data make_data(const Model& m) {
   d.ws_Dinv.assign(nb, Mat6::Zero());
   d.ws_u.assign(nb, Vec6::Zero());
   d.ws_c.assign(nb, Vec6::Zero());
+  d.M_crba = MatX::Zero(m.nv, m.nv);
+  d.qfrc_bias = VecX::Zero(m.nv);
   d.M = MatX::Zero(m.nv, m.nv);
   d.LD = MatX::Zero(m.nv, m.nv);
   d.bias = VecX::Zero(m.nv);

@@ -2,6 +2,8 @@
 #include "engine/physics/step.h"
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <cmath>
 
 #include "engine/physics/dynamics.h"
@@ -161,11 +163,7 @@ void collide(const Model& m, Data& d) {
 void compute_constraints(const Model& m, Data& d) {
   d.rows.clear();
   const int nv = m.nv;
-  const double h = m.dt;
   const SolverOptions& so = m.solver;
-  const Softness cs = make_soft(std::min(so.contact_hertz, 0.25 / h), so.contact_damping_ratio, h);
-  const Softness ls = make_soft(std::min(so.limit_hertz, 0.25 / h), so.limit_damping_ratio, h);
-  const double vmax = so.max_depenetration_speed;
   int nz = 0;  // next free sparse entry
   auto add_row = [&](ConstraintRow r, int count) {
     r.nz_begin = nz;
@@ -178,18 +176,6 @@ void compute_constraints(const Model& m, Data& d) {
     d.J_val[nz] = value;
     add_row(r, 1);
   };
-  // unilateral row with gap C (>0 apart, <0 violated): speculative if C > 0, soft otherwise
-  auto set_gap = [&](ConstraintRow& r, double C, const Softness& s) {
-    if (C > 0.0) {
-      r.bias = C / h;
-      r.mass_scale = 1.0;
-      r.impulse_scale = 0.0;
-    } else {
-      r.bias = std::max(s.bias_rate * C, -vmax);
-      r.mass_scale = s.mass_scale;
-      r.impulse_scale = s.impulse_scale;
-    }
-  };
   if (nv == 0) return;
   const bool warm = so.warm_start;
   for (int ci = 0; ci < static_cast<int>(d.contacts.size()); ++ci) {
@@ -201,7 +187,7 @@ void compute_constraints(const Model& m, Data& d) {
     ConstraintRow rn;
     rn.kind = ConstraintRow::Normal;
     rn.contact = ci;
-    set_gap(rn, -c.point.depth, cs);
+    rn.C = -c.point.depth;
     rn.lambda = warm ? c.normal_impulse : 0.0;
     row_range(m, c.body_a, c.body_b, rn);
     add_row(rn, contact_row(m, d, c.body_a, c.body_b, p, n, nz));
@@ -232,7 +218,7 @@ void compute_constraints(const Model& m, Data& d) {
       if (C > act) continue;
       ConstraintRow r;
       r.kind = ConstraintRow::Limit;
-      set_gap(r, C, ls);
+      r.C = C;
       row_range(m, static_cast<int>(i), 0, r);
       add_unit_row(r, b.v_index, use_lo ? 1.0 : -1.0);
     } else if (b.joint == JointType::Ball && (b.swing_limit > 0 || b.twist_limit > 0)) {
@@ -249,7 +235,7 @@ void compute_constraints(const Model& m, Data& d) {
         if (C < act && s > 1e-9) {
           ConstraintRow r;
           r.kind = ConstraintRow::Limit;
-          set_gap(r, C, ls);
+          r.C = C;
           row_range(m, static_cast<int>(i), 0, r);
           const Vec3 jb = -(R.transpose() * (axis / s));
           for (int k = 0; k < 3; ++k) {
@@ -268,7 +254,7 @@ void compute_constraints(const Model& m, Data& d) {
         if (C < act) {
           ConstraintRow r;
           r.kind = ConstraintRow::Limit;
-          set_gap(r, C, ls);
+          r.C = C;
           row_range(m, static_cast<int>(i), 0, r);
           add_unit_row(r, b.v_index + 2, tw >= 0 ? -1.0 : 1.0);
         }
@@ -297,10 +283,16 @@ void passive_forces(const Model& m, Data& d) {
   }
 }
 
-void forward_dynamics(const Model& m, Data& d) {
+void mass_matrix(const Model& m, Data& d) {
   if (m.nv == 0) return;
   const double h = m.dt;
-  crba(m, d, d.M);
+  crba(m, d, d.M_crba);
+  // M = M_crba + implicit terms. crba writes only the DoF blocks (zero elsewhere in both matrices), so
+  // copying the blocks is the whole copy; the values are bit-for-bit those crba would write into M.
+  for (size_t blk = 0; blk + 1 < m.block_begin.size(); ++blk) {
+    const int b0 = m.block_begin[blk], nb = m.block_begin[blk + 1] - b0;
+    d.M.block(b0, b0, nb, nb) = d.M_crba.block(b0, b0, nb, nb);
+  }
   // implicit damping / springs and armature on the diagonal (see step.h)
   for (size_t i = 1; i < m.bodies.size(); ++i) {
     const Body& b = m.bodies[i];
@@ -308,7 +300,35 @@ void forward_dynamics(const Model& m, Data& d) {
     for (int k = 0; k < b.nv; ++k) d.M(b.v_index + k, b.v_index + k) += add;
   }
   factor_ltdl(m, d.M, d.LD);
-  bias_forces(m, d, d.bias);
+}
+
+void compute_bias(const Model& m, Data& d) {
+  if (m.nv == 0) return;
+  rigid_bias_forces(m, d, d.qfrc_bias);
+  d.bias = d.qfrc_bias;
+}
+
+namespace {
+// true when every applied force / torque is +0.0 bit for bit (clear_applied's value): then
+// bias_forces() = rigid_bias_forces() exactly (x - (+0) == x for every double x, including -0), so the
+// second RNEA can be skipped without changing a bit.
+bool no_applied(const Data& d) {
+  for (size_t i = 0; i < d.applied_force.size(); ++i)
+    for (int k = 0; k < 3; ++k)
+      if (std::bit_cast<uint64_t>(d.applied_force[i][k]) != 0 || std::bit_cast<uint64_t>(d.applied_torque[i][k]) != 0)
+        return false;
+  return true;
+}
+}  // namespace
+
+void unconstrained_velocity(const Model& m, Data& d) {
+  if (m.nv == 0) return;
+  const double h = m.dt;
+  // c with the applied forces as they are now (written by control after step1)
+  if (no_applied(d))
+    d.bias = d.qfrc_bias;
+  else
+    bias_forces(m, d, d.bias);
   for (int k = 0; k < m.nv; ++k) d.v_free[k] = h * (d.tau[k] + d.passive[k] - d.bias[k]);
   solve_ltdl(m, d.LD, d.v_free);
   for (int k = 0; k < m.nv; ++k) {
@@ -317,12 +337,40 @@ void forward_dynamics(const Model& m, Data& d) {
   }
 }
 
-void solve_constraints(const Model& m, Data& d) {
-  const int nv = m.nv;
-  if (nv == 0) return;
+void forward_dynamics(const Model& m, Data& d) {
+  mass_matrix(m, d);
+  compute_bias(m, d);
+  unconstrained_velocity(m, d);
+}
+
+// ---- solve_constraints: Box2D v3's solver stages (prepare, warm start, solve, store impulses) ----
+
+void prepare_constraints(const Model& m, Data& d) {
   const int nr = static_cast<int>(d.rows.size());
+  const double h = m.dt;
   d.vtmp = d.v;  // velocity at the start of the step (for qacc)
   d.v = d.v_free;
+  // Soft parameters from each row's position error C (Box2D v3 soft step, step.h). A unilateral row with
+  // gap C > 0 (apart) is speculative: bias C / h lets it close exactly the gap in this step, rigidly;
+  // C <= 0 (violated) is soft with its push-out speed capped.
+  const SolverOptions& so = m.solver;
+  const Softness cs = make_soft(std::min(so.contact_hertz, 0.25 / h), so.contact_damping_ratio, h);
+  const Softness ls = make_soft(std::min(so.limit_hertz, 0.25 / h), so.limit_damping_ratio, h);
+  const double vmax = so.max_depenetration_speed;
+  for (int r = 0; r < nr; ++r) {
+    ConstraintRow& row = d.rows[r];
+    if (row.kind != ConstraintRow::Normal && row.kind != ConstraintRow::Limit) continue;
+    const Softness& s = row.kind == ConstraintRow::Normal ? cs : ls;
+    if (row.C > 0.0) {
+      row.bias = row.C / h;
+      row.mass_scale = 1.0;
+      row.impulse_scale = 0.0;
+    } else {
+      row.bias = std::max(s.bias_rate * row.C, -vmax);
+      row.mass_scale = s.mass_scale;
+      row.impulse_scale = s.impulse_scale;
+    }
+  }
   // Each row only reaches the DoFs of its block(s) [j_begin, j_end) (M is block diagonal over the
   // articulations), so W_r = M^-1 J_r^T is stored packed over that range and every pass below costs
   // O(range), not O(nv): N independent articulations cost N times one.
@@ -370,7 +418,22 @@ void solve_constraints(const Model& m, Data& d) {
     }
     g0 = g1;
   }
-  // warm start (clamp old impulses into the current feasible set)
+  // Friction rows: coupling J_t M^-1 J_n^T with their normal row, so the fused contact block in
+  // solve_pgs is exactly Gauss-Seidel order n -> t1 -> t2.
+  for (int r = 0; r < nr; ++r) {
+    ConstraintRow& row = d.rows[r];
+    if (row.kind == ConstraintRow::Friction) {
+      const ConstraintRow& rn = d.rows[row.partner - 1];
+      row.coupling = sparse_dot_off(d.J_idx.data() + row.nz_begin, d.J_val.data() + row.nz_begin,
+                                    row.nz_count, d.MinvJT.data() + rn.w_off, rn.j_begin);
+    }
+  }
+}
+
+void warm_start(const Model& m, Data& d) {
+  (void)m;
+  const int nr = static_cast<int>(d.rows.size());
+  // clamp last step's impulses into the current feasible set, then apply them: v += W lambda
   for (int r = 0; r < nr; ++r) {
     ConstraintRow& row = d.rows[r];
     if (row.kind != ConstraintRow::Friction) {
@@ -390,19 +453,15 @@ void solve_constraints(const Model& m, Data& d) {
     if (row.lambda != 0.0)
       axpy_n(row.lambda, d.MinvJT.data() + row.w_off, d.v.data() + row.j_begin, row.j_end - row.j_begin);
   }
+}
+
+void solve_pgs(const Model& m, Data& d) {
+  const int nr = static_cast<int>(d.rows.size());
   const bool cone = m.solver.friction == FrictionModel::Cone;
   double* v = d.v.data();
   // Contact blocks (normal r, tangents r+1, r+2 share one sparse index pattern and range): one fused
   // pass for the three J.v products, the normal update, the tangent updates corrected by the normal's
   // effect (J_t . W_n, precomputed: exactly Gauss-Seidel order n -> t), and one fused pass updating v.
-  for (int r = 0; r < nr; ++r) {
-    ConstraintRow& row = d.rows[r];
-    if (row.kind == ConstraintRow::Friction) {
-      const ConstraintRow& rn = d.rows[row.partner - 1];
-      row.coupling = sparse_dot_off(d.J_idx.data() + row.nz_begin, d.J_val.data() + row.nz_begin,
-                                    row.nz_count, d.MinvJT.data() + rn.w_off, rn.j_begin);
-    }
-  }
   for (int it = 0; it < m.solver.iterations; ++it) {
     for (int r = 0; r < nr; ++r) {
       ConstraintRow& row = d.rows[r];
@@ -478,7 +537,12 @@ void solve_constraints(const Model& m, Data& d) {
       r += 2;
     }
   }
-  // results back into the contacts
+}
+
+void store_impulses(const Model& m, Data& d) {
+  const int nv = m.nv;
+  const int nr = static_cast<int>(d.rows.size());
+  // impulses back into the contacts: reported forces, and next step's warm start (add_contact)
   for (int r = 0; r < nr; ++r) {
     const ConstraintRow& row = d.rows[r];
     if (row.kind != ConstraintRow::Normal) continue;
@@ -490,6 +554,14 @@ void solve_constraints(const Model& m, Data& d) {
     c.force = (row.lambda * c.point.normal + c.friction_impulse) / m.dt;
   }
   for (int k = 0; k < nv; ++k) d.qacc[k] = (d.v[k] - d.vtmp[k]) / m.dt;
+}
+
+void solve_constraints(const Model& m, Data& d) {
+  if (m.nv == 0) return;
+  prepare_constraints(m, d);
+  warm_start(m, d);
+  solve_pgs(m, d);
+  store_impulses(m, d);
 }
 
 void integrate(const Model& m, Data& d) {
@@ -517,14 +589,24 @@ void integrate(const Model& m, Data& d) {
   d.time += h;
 }
 
-void step(const Model& m, Data& d) {
+void step1(const Model& m, Data& d) {
   forward_kinematics(m, d);
   collide(m, d);
   compute_constraints(m, d);
+  mass_matrix(m, d);
+  compute_bias(m, d);
+}
+
+void step2(const Model& m, Data& d) {
   passive_forces(m, d);
-  forward_dynamics(m, d);
+  unconstrained_velocity(m, d);
   solve_constraints(m, d);
   integrate(m, d);
+}
+
+void step(const Model& m, Data& d) {
+  step1(m, d);
+  step2(m, d);
 }
 
 void apply_force_at_point(const Model& m, Data& d, int body, const Vec3& f, const Vec3& p) {

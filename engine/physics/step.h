@@ -1,7 +1,21 @@
 #pragma once
-// Time stepping: step() is a pipeline of stages, each a free function (also callable on their own):
-//   forward_kinematics -> collide -> compute_constraints -> passive_forces -> forward_dynamics
-//   -> solve_constraints -> integrate
+// Time stepping. step() = step1() + step2() (as MuJoCo's mj_step1 / mj_step2), each a list of stages,
+// every stage a free function (also callable on its own):
+//
+//   step1 (position stage; reads q, v):
+//     forward_kinematics -> collide -> compute_constraints -> mass_matrix -> compute_bias
+//   -- control may run here: it reads the step1 outputs below, writes tau / applied forces / spring_ref --
+//   step2 (velocity stage; reads tau, applied forces, spring_ref):
+//     passive_forces -> unconstrained_velocity -> solve_constraints -> integrate
+//
+// STATE AFTER step1 (q, v, time unchanged): d.x / com_world / v_body / cdof / cdof_dot / cinert for the
+// current q, v; d.contacts of the current q (with warm-start impulses of the last step) and their
+// constraint rows (J; soft parameters come in solve_constraints' prepare stage); d.M_crba = M(q) (CRBA
+// only), d.qfrc_bias = c(q, v) without applied forces, d.M = M_crba + armature + dt D + dt^2 K, d.LD its
+// factor, d.bias = qfrc_bias. Anything that changes q or v between step1 and step2 makes these stale.
+// STATE AFTER step2 / step(): q, v, time advanced; d.x / contacts / M ... are still those of the START of
+// the step (as in MuJoCo's mj_step); call forward_kinematics(m, d) (or step1) if poses must match the new
+// q. d.bias = the c actually used (with the applied forces). step() is bit-for-bit step1 + step2.
 //
 // FORMULATION (and why)
 //  * Velocity-level, semi-implicit Euler (as Box2D, Bullet, PhysX, MuJoCo's Euler integrator):
@@ -37,7 +51,9 @@
 
 namespace eng::physics {
 
-void step(const Model& m, Data& d);
+void step(const Model& m, Data& d);   // = step1 + step2
+void step1(const Model& m, Data& d);  // kinematics, contacts, rows, M, its factor, c(q, v)
+void step2(const Model& m, Data& d);  // passive forces, v_free, constraint solve, integrate
 
 // pipeline stages
 void collide(const Model& m, Data& d);              // fills d.contacts (needs forward_kinematics)
@@ -47,14 +63,28 @@ void begin_contacts(Data& d);  // d.prev_contacts <- d.contacts (for warm start)
 // contact with the same (geom_a, geom_b, feature). Returns false when max_contacts is reached.
 bool add_contact(const Model& m, Data& d, const ContactPoint& cp);
 void compute_constraints(const Model& m, Data& d);  // rows, J, bias and soft params
+// step1: d.M_crba = crba(); d.M = M_crba + armature + dt D + dt^2 K; d.LD = factor_ltdl(d.M)
+void mass_matrix(const Model& m, Data& d);
+// step1: d.qfrc_bias = rigid_bias_forces() (no applied forces); d.bias = d.qfrc_bias
+void compute_bias(const Model& m, Data& d);
 void passive_forces(const Model& m, Data& d);       // d.passive = -D v - K (q + dt v)
-void forward_dynamics(const Model& m, Data& d);     // M (with armature + implicit terms), factor, v_free
-void solve_constraints(const Model& m, Data& d);    // M^-1 J^T, Delassus diagonal, PGS; d.v; forces
+// step2: d.bias = c with the current applied forces; v_free = v + dt M^-1 (tau + passive - bias); qacc
+void unconstrained_velocity(const Model& m, Data& d);
+void forward_dynamics(const Model& m, Data& d);     // mass_matrix + compute_bias + unconstrained_velocity
+// step2: the constraint solve, Box2D v3's stages in order: prepare_constraints -> warm_start ->
+// solve_pgs -> store_impulses. v_free -> d.v; contact impulses / forces; qacc.
+void solve_constraints(const Model& m, Data& d);
+//   prepare: d.v = v_free (d.vtmp = v at the start); soft params (bias, mass/impulse scale) from each
+//   row's C; W = M^-1 J^T per row (packed over its DoF range); Delassus diagonal; friction coupling
+void prepare_constraints(const Model& m, Data& d);
+//   warm start: last step's impulses clamped into the feasible set, applied: v += W lambda
+void warm_start(const Model& m, Data& d);
+//   solve: solver.iterations projected Gauss-Seidel sweeps (soft step, Coulomb cone / pyramid)
+void solve_pgs(const Model& m, Data& d);
+//   store impulses: contact normal / friction impulses (next step's warm start) and forces; qacc
+void store_impulses(const Model& m, Data& d);
 void integrate(const Model& m, Data& d);            // q += dt * v on the manifold; time += dt
 
-// NOTE: after step(), d.x / com_world / v_body / cdof are those computed at the START of the step
-// (as in MuJoCo's mj_step); call forward_kinematics(m, d) if poses must match the new q exactly.
-//
 // inputs (persist until clear_applied). apply_force_at_point uses d.com_world (last kinematics).
 void apply_force_at_point(const Model& m, Data& d, int body, const Vec3& force_world,
                           const Vec3& point_world);
