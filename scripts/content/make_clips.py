@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Convert content/clips/src/*.clip (readable key-frame text) into content/clips/boxing_clips.gltf.
 
-Python 3 stdlib only.  Usage:  python3 scripts/content/make_clips.py [--report] [--check]
+Python 3 stdlib only.  Usage:  python3 scripts/content/make_clips.py [--report] [--check] [--out PATH]
   --report  print per-key knee angles and sole heights
   --check   parse + validate only, do not write the glTF
 
@@ -676,7 +676,13 @@ def write_gltf(clips, posed, path):
 def main(argv):
     report = "--report" in argv
     check = "--check" in argv
-    files = [a for a in argv[1:] if not a.startswith("--")] or sorted(glob.glob(os.path.join(SRC, "*.clip")))
+    out = OUT
+    args = argv[1:]
+    if "--out" in args:  # write elsewhere (tests compare a fresh conversion with the committed file)
+        i = args.index("--out")
+        out = args[i + 1]
+        del args[i:i + 2]
+    files = [a for a in args if not a.startswith("--")] or sorted(glob.glob(os.path.join(SRC, "*.clip")))
     try:
         clips = {}
         for p in files:
@@ -735,8 +741,8 @@ def main(argv):
         print(f"note: {n}: {k} joint rotations clamped to the boxer's joint limits")
     print(f"{len(clips)} clips ok; worst IK sole error {worst * 1000:.3f} mm")
     if not check:
-        write_gltf(clips, posed, OUT)
-        print(f"wrote {os.path.relpath(OUT, ROOT)}")
+        write_gltf(clips, posed, out)
+        print(f"wrote {os.path.relpath(out, ROOT)}")
     return 0
 
 

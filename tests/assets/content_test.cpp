@@ -11,6 +11,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <unistd.h>
 
 #include "engine/assets/character.h"
 #include "engine/assets/gltf.h"
@@ -75,6 +76,22 @@ TEST(Content, EveryGltfFileHasNoValidatorErrorsOrWarnings) {
     const std::string line = f + " errors=0 warnings=0";
     EXPECT_NE(r.output.find(line), std::string::npos) << line << "\n" << r.output;
   }
+}
+
+TEST(Content, CommittedFilesAreWhatTheScriptsGenerate) {
+  // One source of truth: the scripts. A stale file (e.g. clips converted against an older boxer) fails here.
+  const std::string tmp = (fs::temp_directory_path() / ("content_test_" + std::to_string(::getpid()))).string();
+  fs::create_directories(tmp);
+  const Proc boxer = run("python3 '" + kRoot + "/scripts/content/make_boxer.py' '" + tmp + "/boxer.gltf'");
+  if (boxer.rc == 127) GTEST_SKIP() << "no python3";
+  ASSERT_EQ(boxer.rc, 0) << boxer.output;
+  const Proc clips = run("python3 '" + kRoot + "/scripts/content/make_clips.py' --out '" + tmp + "/clips.gltf'");
+  ASSERT_EQ(clips.rc, 0) << clips.output;
+  EXPECT_EQ(read_text(tmp + "/boxer.gltf"), read_text(kRoot + "/content/boxer/boxer.gltf"))
+      << "content/boxer/boxer.gltf is stale: run scripts/content/make_boxer.py";
+  EXPECT_EQ(read_text(tmp + "/clips.gltf"), read_text(kRoot + "/content/clips/boxing_clips.gltf"))
+      << "content/clips/boxing_clips.gltf is stale: run scripts/content/make_clips.py";
+  fs::remove_all(tmp);
 }
 
 TEST(Content, ViewerGlbIsTheGameFilesMerged) {
