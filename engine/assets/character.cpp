@@ -1,5 +1,7 @@
 #include "engine/assets/character.h"
 
+#include "engine/assets/frame.h"
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -86,13 +88,14 @@ BoneShape parse_shape(const nlohmann::json& s, const std::string& node, size_t i
     if (!(b.shape.half_length >= 0)) fail(node, pre + "half_length", "must not be negative");
   } else if (type == "box") {
     b.shape.type = ShapeType::Box;
-    b.shape.half_extents = vec<3>(s, "half_extents", node, pre, true, Eigen::Vector3d::Zero());
+    b.shape.half_extents = frame::to_engine(vec<3>(s, "half_extents", node, pre, true, Eigen::Vector3d::Zero()));
     if (!(b.shape.half_extents.minCoeff() > 0)) fail(node, pre + "half_extents", "must all be positive");
   } else {
     fail(node, pre + "type", "is '" + type + "'; expected \"capsule\", \"sphere\" or \"box\"");
   }
-  b.pos = vec<3>(s, "pos", node, pre, false, Eigen::Vector3d::Zero());
+  b.pos = frame::to_engine(vec<3>(s, "pos", node, pre, false, Eigen::Vector3d::Zero()));
   Eigen::Vector4d q = vec<4>(s, "quat", node, pre, false, Eigen::Vector4d(1, 0, 0, 0));  // [w, x, y, z]
+  q.tail<3>() = frame::to_engine(Eigen::Vector3d(q.tail<3>()));  // before normalising: same sums as authored
   if (!(q.norm() > 1e-9)) fail(node, pre + "quat", "must be a non-zero quaternion [w, x, y, z]");
   q.normalize();
   b.quat = Eigen::Quaterniond(q[0], q[1], q[2], q[3]);
@@ -113,7 +116,7 @@ BonePhysics parse_bone(const nlohmann::json& extras, const std::string& node, bo
   if (is_root && b.joint != "free") fail(node, "joint", "of the root bone must be \"free\", is '" + b.joint + "'");
   if (!is_root && b.joint == "free") fail(node, "joint", "\"free\" is only allowed on the root bone");
   if (b.joint == "hinge") {
-    b.axis = vec<3>(p, "axis", node, "", true, Eigen::Vector3d::UnitY());
+    b.axis = frame::to_engine(vec<3>(p, "axis", node, "", true, Eigen::Vector3d::UnitX()));
     if (!(b.axis.norm() > 1e-9)) fail(node, "axis", "must be a non-zero vector");
     b.axis.normalize();
     Eigen::Vector2d r = vec<2>(p, "range", node, "", true, Eigen::Vector2d::Zero());
@@ -128,8 +131,9 @@ BonePhysics parse_bone(const nlohmann::json& extras, const std::string& node, bo
   }
   b.mass = number(p, "mass", node, "", true);
   if (!(b.mass > 0)) fail(node, "mass", "must be positive (kg), got " + std::to_string(b.mass));
-  b.com = vec<3>(p, "com", node, "", true, Eigen::Vector3d::Zero());
-  b.inertia_diag = vec<3>(p, "inertia", node, "", true, Eigen::Vector3d::Zero());
+  b.com = frame::to_engine(vec<3>(p, "com", node, "", true, Eigen::Vector3d::Zero()));
+  // Principal moments about the bone frame's axes: they follow the axes (frame.h).
+  b.inertia_diag = frame::to_engine(vec<3>(p, "inertia", node, "", true, Eigen::Vector3d::Zero()));
   if (!(b.inertia_diag.minCoeff() > 0)) fail(node, "inertia", "must be three positive principal moments");
   const Eigen::Vector3d& I = b.inertia_diag;
   const double tol = 1e-6 * I.sum();

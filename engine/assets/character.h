@@ -1,6 +1,8 @@
 #pragma once
 // Character descriptions from glTF content: the skeleton plus per-bone physics read from each bone
 // node's extras["physics"] (schema in content/README.md). Engine-generic: no boxing knowledge here.
+// The extras are stored in glTF's axes like the rest of the file; everything below is in the engine's
+// frame (Z up), converted on load by engine/assets/frame.h.
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <string>

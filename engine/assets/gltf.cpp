@@ -3,6 +3,8 @@
 // bad file becomes one eng::Error, never an out-of-bounds read.
 #include "engine/assets/gltf.h"
 
+#include "engine/assets/frame.h"
+
 #include <tiny_gltf.h>
 
 #include <cstring>
@@ -193,9 +195,11 @@ GltfPrimitive convert_primitive(const tinygltf::Model& m, const tinygltf::Primit
   auto pos = p.attributes.find("POSITION");
   if (pos == p.attributes.end()) fail(where + " has no POSITION attribute");
   out.positions = read_vec3(m, pos->second, where + " POSITION");
+  for (glm::vec3& v : out.positions) v = frame::to_engine(v);
   auto nrm = p.attributes.find("NORMAL");
   if (nrm != p.attributes.end()) {
     out.normals = read_vec3(m, nrm->second, where + " NORMAL");
+    for (glm::vec3& v : out.normals) v = frame::to_engine(v);
     if (out.normals.size() != out.positions.size())
       fail(where + " has " + std::to_string(out.normals.size()) + " normals for " +
            std::to_string(out.positions.size()) + " positions");
@@ -267,6 +271,10 @@ GltfNode convert_node(const tinygltf::Model& m, const tinygltf::Node& n, size_t 
     if (n.scale.size() != 3) fail(where + " scale must have 3 numbers");
     out.scale = glm::vec3(n.scale[0], n.scale[1], n.scale[2]);
   }
+  // The local transform in the engine's frame: P * (T R S) * P^-1 is T, R and S each turned by P.
+  out.translation = frame::to_engine(out.translation);
+  out.rotation = frame::to_engine(out.rotation);
+  out.scale = frame::to_engine(out.scale);
   out.extras = to_json(n.extras);
   return out;
 }
@@ -301,6 +309,7 @@ GltfAnimation convert_animation(const tinygltf::Model& m, const tinygltf::Animat
       fail(cw + " has unknown interpolation '" + c.interpolation + "'");
     c.times = read_floats(m, s.input, TINYGLTF_TYPE_SCALAR, cw + " input (times)");
     c.values = read_floats(m, s.output, comps == 3 ? TINYGLTF_TYPE_VEC3 : TINYGLTF_TYPE_VEC4, cw + " output");
+    frame::values_to_engine(c.values.data(), c.values.size(), comps);  // CUBICSPLINE tangents turn alike
     const size_t per_key = static_cast<size_t>(comps) * (c.interpolation == "CUBICSPLINE" ? 3 : 1);
     if (c.values.size() != c.times.size() * per_key)
       fail(cw + " has " + std::to_string(c.times.size()) + " key times but " +

@@ -3,6 +3,10 @@
 // Uses Debian's shared tinygltf (TinyGLTF::TinyGLTF); never define TINYGLTF_IMPLEMENTATION.
 // Every failure (missing file, broken JSON, accessor out of range, bad indices) becomes an
 // eng::Error naming the file and the problem; load_gltf never crashes on bad input.
+//
+// Frames: glTF files are +Y up with the asset facing +Z (the spec); everything load_gltf returns is
+// in the engine's frame, +Z up, facing +X (engine/assets/frame.h: an exact axis permutation). Extras
+// are returned as stored (glTF axes): their readers (load_character) convert what they read.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -48,7 +52,7 @@ struct GltfChannel {
   std::string path;           // "translation" | "rotation" | "scale"
   std::string interpolation;  // LINEAR | STEP | CUBICSPLINE
   std::vector<float> times;
-  std::vector<float> values;  // flattened, 3 or 4 floats per key (xyzw for rotation, glTF order);
+  std::vector<float> values;  // flattened, 3 or 4 floats per key (xyzw for rotation, glTF's order; engine axes);
                               // CUBICSPLINE keeps glTF's (in-tangent, value, out-tangent) triplets
 };
 

@@ -5,7 +5,9 @@ Standard library only. Run from anywhere:  python3 scripts/content/make_boxer.py
 Writes one .gltf with an embedded base64 buffer; the JSON is indented with short number arrays
 kept on one line so that regenerated files diff well. The output is deterministic.
 
-Conventions: Z up, facing +X, left = +Y, metres / kg / s / rad. Rest pose: standing straight,
+Conventions: everything below is built in the engine's frame (Z up, facing +X, left = +Y,
+metres / kg / s / rad) and turned into glTF's frame (+Y up, facing +Z, left = +X) only when the file
+is written (to_gltf below; engine/assets/frame.h undoes it on load). Rest pose: standing straight,
 arms hanging straight down. Every node's translation is its joint position in the parent's
 frame and every rest rotation is identity, so bone frames are world-aligned at rest.
 Physics lives in each bone node's extras["physics"]; the schema is documented in
@@ -354,6 +356,36 @@ def bone_mesh(name, shapes):
 
 
 # ---------------------------------------------------------------- glTF writing
+# Engine frame -> glTF frame. The engine is Z up facing +X (left +Y); glTF 2.0 is +Y up with the asset
+# facing +Z (so its left is +X). Engine (x, y, z) = glTF (z, x, y): a cyclic permutation of the axes,
+# i.e. a proper rotation (120 deg about (1, 1, 1)) with no sign flips. Applied to every position,
+# direction, quaternion vector part and principal-moment triple, it only moves numbers, so the loader's
+# inverse (engine/assets/frame.h) returns the engine's values bit for bit. Keep the two in step.
+def to_gltf(v):
+    return [v[1], v[2], v[0]]
+
+
+def quat_to_gltf(q):  # [w, x, y, z] -> [w, x, y, z] with the vector part in glTF axes
+    return [q[0]] + to_gltf(q[1:])
+
+
+def physics_to_gltf(phys):
+    out = dict(phys)
+    for key in ("axis", "com", "inertia"):  # inertia: principal moments about the frame's axes
+        if key in out:
+            out[key] = to_gltf(out[key])
+    shapes = []
+    for sh in phys["shapes"]:
+        sh = dict(sh)
+        sh["pos"] = to_gltf(sh["pos"])
+        sh["quat"] = quat_to_gltf(sh["quat"])
+        if "half_extents" in sh:
+            sh["half_extents"] = to_gltf(sh["half_extents"])
+        shapes.append(sh)
+    out["shapes"] = shapes
+    return out
+
+
 def r6(x):
     if isinstance(x, float):  # drop float noise below 1e-9, then keep 6 significant digits
         v = float("%.6g" % round(x, 9))
@@ -399,6 +431,9 @@ class Buffer:
         return len(self.accessors) - 1
 
     def vec3(self, vs):
+        """Bounds from the stored float32 values, written exactly (build() keeps r6 away from them):
+        the validator checks min/max against the data bit for bit."""
+        vs = [to_gltf(v) for v in vs]
         raw = b"".join(struct.pack("<3f", *v) for v in vs)
         f32 = [[struct.unpack("<f", struct.pack("<f", c))[0] for c in v] for v in vs]
         mn = [min(v[i] for v in f32) for i in range(3)]
@@ -453,7 +488,8 @@ def build():
             prims.append({"attributes": {"POSITION": buf.vec3(p["pos"]), "NORMAL": buf.vec3(n)},
                           "indices": buf.indices(p["idx"]), "material": p["material"], "mode": 4})
         meshes.append({"name": name + "_mesh", "primitives": prims})
-        node = {"name": name, "translation": offset, "mesh": len(meshes) - 1, "extras": {"physics": phys}}
+        node = {"name": name, "translation": to_gltf(offset), "mesh": len(meshes) - 1,
+                "extras": {"physics": physics_to_gltf(phys)}}
         kids = [names.index(b[0]) for b in bones if b[1] == name]
         if kids:
             node["children"] = kids
@@ -478,7 +514,7 @@ def build():
     lowest = min(world[b[0]][2] + s["pos"][2] - s["half_extents"][2] for b in bones for s in b[5]
                  if s["type"] == "box")
     assert abs(lowest) < 1e-9, lowest
-    total = sum(n["extras"]["physics"]["mass"] for n in nodes)
+    total = sum(n["extras"]["physics"]["mass"] for n in nodes)  # (scalars: frame-free)
     assert abs(total - TOTAL_MASS) < 1e-9, total
     dof = sum({"free": 6, "ball": 3, "hinge": 1, "fixed": 0}[n["extras"]["physics"]["joint"]] for n in nodes)
     assert dof == 37, dof
@@ -490,7 +526,7 @@ def build():
             "name": "boxer",
             "root": "pelvis",
             "schema": "content/README.md#bone-physics-extras",
-            "units": "metres, kilograms, seconds, radians; Z up, facing +X, left +Y",
+            "units": "metres, kilograms, seconds, radians; glTF frame: +Y up, facing +Z, left +X",
             "total_mass": total,
             "dof": dof,
             "mass_model": "de Leva (1996) male segment fractions of %.1f kg body + %.1f kg per glove; "
@@ -508,12 +544,14 @@ def build():
         "meshes": meshes,
         "materials": [{"name": n, "pbrMetallicRoughness": {"baseColorFactor": c, "roughnessFactor": r,
                                                           "metallicFactor": m}} for n, c, r, m in MATERIALS],
-        "accessors": buf.accessors,
+        "accessors": None,  # set below, unrounded
         "bufferViews": buf.views,
         "buffers": [{"byteLength": len(buf.data),
                      "uri": "data:application/octet-stream;base64," + base64.b64encode(bytes(buf.data)).decode()}],
     }
-    return r6(gltf)
+    gltf = r6(gltf)
+    gltf["accessors"] = buf.accessors
+    return gltf
 
 
 def main():

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Convert content/clips/src/*.clip (readable key-frame text) into content/clips/boxing_clips.gltf.
 
-Python 3 stdlib only.  Usage:  python3 scripts/content/make_clips.py [--report] [--check]
+Python 3 stdlib only.  Usage:  python3 scripts/content/make_clips.py [--report] [--check] [--out PATH]
   --report  print per-key knee angles and sole heights
   --check   parse + validate only, do not write the glTF
 
@@ -25,7 +25,8 @@ CLIP FORMAT (one statement per line, '#' starts a comment):
                                      along it).  'ik l off' drops it.
   Euler order: R = Rz(rz) * Ry(ry) * Rx(rx), i.e. intrinsic Z-Y-X (yaw, then pitch about the new Y,
   then roll about the new X), in the parent frame.  Same order for the root's heading/pitch/roll.
-  Axes: facing +X, left = +Y, Z up.  Bones not listed keep the rest pose (identity).
+  Axes: facing +X, left = +Y, Z up (the engine's frame; the .clip sources and all the maths here use it).
+  Bones not listed keep the rest pose (identity).
   Rest pose: standing straight, arms hanging down.  Elbow hinge axis (0,-1,0), knee hinge (0,1,0).
   Sign hints: ry > 0 tips a bone's +Z forward (torso/head lean forward), so arms and legs (which
   hang along -Z) swing forward with ry < 0; rx < 0 leans the torso left; rx > 0 raises the left arm
@@ -37,12 +38,16 @@ CONVERSION:
     planted soles stay on the floor between authored keys too (the report checks < 1 cm);
   * where one key has an IK foot and the next poses the leg explicitly (falls, stand-ups), the
     ankle moves on a line, the foot orientation is slerped, and the foot is lifted out of the floor;
+  * the file is written in glTF's frame (+Y up, facing +Z, left +X): engine (x, y, z) = glTF (z, x, y),
+    the axis permutation of make_boxer.py's to_gltf, applied to translations, quaternion vector parts
+    and the direction/point extras; engine/assets/frame.h undoes it on load, bit for bit;
   * output: content/clips/boxing_clips.gltf -- the 16 skeleton nodes (rest offsets as translations,
     joint kind/hinge axis in node extras) and one animation per clip: a LINEAR translation channel
     on the pelvis and LINEAR rotation channels (x,y,z,w, hemisphere-continuous) on every bone, with
     extras {tags, loop, next, source, glove, impact}.  Embedded base64 buffer: one file to commit.
   * ball joints are clamped to the swing/twist limits in content/boxer/boxer.gltf (physics extras,
-    swing about the bone's Z axis); IK-driven legs are not clamped, only reported as warnings;
+    swing about the bone's Z axis; the feet's swing capped at 0.6 rad, see CLIP_SWING_CAP); IK-driven
+    legs are not clamped, only reported as warnings;
   * errors name the file and line (unknown bone/statement, bad numbers, hinge out of range, IK out
     of reach, base cycles) and exit with status 1.
 """
@@ -407,6 +412,11 @@ def blend_leg(side, pos, rots, key_a, key_b, u):
 
 
 BOXER = os.path.join(ROOT, "content", "boxer", "boxer.gltf")
+# The committed clips were converted when the boxer's ankle cone was 0.6 rad. The physics limit is now
+# 0.9 rad (boxer.gltf, since the control commit that raised it) but the clips keep the 0.6 rad clamp:
+# with 0.9 the free (not IK-planted) feet of the fall / get-up clips come out differently and the
+# game's goldens and balance results change. Drop this cap when the clips are re-tuned on purpose.
+CLIP_SWING_CAP = {"foot_l": 0.6, "foot_r": 0.6}
 
 
 def load_limits():
@@ -420,7 +430,8 @@ def load_limits():
     for n in doc.get("nodes", []):
         ph = (n.get("extras") or {}).get("physics") or {}
         if ph.get("joint") == "ball" and n.get("name") in INDEX:
-            out[n["name"]] = (float(ph.get("swing_limit", math.pi)), float(ph.get("twist_limit", math.pi)))
+            swing = min(float(ph.get("swing_limit", math.pi)), CLIP_SWING_CAP.get(n["name"], math.inf))
+            out[n["name"]] = (swing, float(ph.get("twist_limit", math.pi)))
     return out
 
 
@@ -579,6 +590,12 @@ def qslerp(a, b, u):
 
 
 # ---------------------------------------------------------------- glTF writer
+def to_gltf(v):
+    """Engine frame (Z up, facing +X) -> glTF frame (+Y up, facing +Z): engine (x, y, z) = glTF (z, x, y).
+    Same permutation as make_boxer.py's to_gltf; numbers are moved, never recomputed."""
+    return [v[1], v[2], v[0]]
+
+
 def write_gltf(clips, posed, path):
     blob = bytearray()
     accessors, views = [], []
@@ -599,9 +616,9 @@ def write_gltf(clips, posed, path):
 
     nodes = []
     for i, (n, p, off, kind, axis, rng) in enumerate(SKELETON):
-        node = {"name": n, "translation": list(off), "extras": {"joint": kind}}
+        node = {"name": n, "translation": to_gltf(off), "extras": {"joint": kind}}
         if axis:
-            node["extras"]["hinge_axis"] = list(axis)
+            node["extras"]["hinge_axis"] = to_gltf(axis)
             node["extras"]["hinge_range_deg"] = list(rng)
         kids = [j for j, b in enumerate(SKELETON) if b[1] == i]
         if kids:
@@ -616,7 +633,7 @@ def write_gltf(clips, posed, path):
         t_acc = add_accessor(times, 1, True)
         samplers, channels = [], []
         # pelvis translation
-        vals = [v for (_t, pos, _r, _k) in keys for v in pos]
+        vals = [v for (_t, pos, _r, _k) in keys for v in to_gltf(pos)]
         samplers.append({"input": t_acc, "output": add_accessor(vals, 3), "interpolation": "LINEAR"})
         channels.append({"sampler": 0, "target": {"node": 0, "path": "translation"}})
         for b in range(16):
@@ -627,7 +644,7 @@ def write_gltf(clips, posed, path):
                 if prev is not None and sum(a * c2 for a, c2 in zip(q, prev)) < 0:
                     q = tuple(-c2 for c2 in q)  # same hemisphere as the previous key
                 prev = q
-                vals += [q[1], q[2], q[3], q[0]]  # glTF order x,y,z,w
+                vals += to_gltf(q[1:]) + [q[0]]  # glTF order x,y,z,w, vector part in glTF axes
             samplers.append({"input": t_acc, "output": add_accessor(vals, 4), "interpolation": "LINEAR"})
             channels.append({"sampler": len(samplers) - 1, "target": {"node": b, "path": "rotation"}})
         extras = {"tags": c["tags"], "loop": c["loop"], "next": c["next"] or ["guard"],
@@ -647,8 +664,9 @@ def write_gltf(clips, posed, path):
                      "uri": "data:application/octet-stream;base64," + base64.b64encode(bytes(blob)).decode()}],
         "bufferViews": views,
         "accessors": accessors,
-        "extras": {"skeleton": "boxer", "euler_order": "R = Rz*Ry*Rx (intrinsic Z-Y-X)",
-                   "sole_point_in_foot_frame": list(SOLE), "units": "metres, Z up, facing +X"},
+        "extras": {"skeleton": "boxer", "euler_order": "R = Rz*Ry*Rx (intrinsic Z-Y-X), of the .clip sources, engine frame (Z up, facing +X)",
+                   "sole_point_in_foot_frame": to_gltf(SOLE),
+                   "units": "metres, seconds; glTF frame: +Y up, facing +Z, left +X"},
     }
     with open(path, "w", encoding="utf-8") as f:
         json.dump(doc, f, indent=1)
@@ -658,7 +676,13 @@ def write_gltf(clips, posed, path):
 def main(argv):
     report = "--report" in argv
     check = "--check" in argv
-    files = [a for a in argv[1:] if not a.startswith("--")] or sorted(glob.glob(os.path.join(SRC, "*.clip")))
+    out = OUT
+    args = argv[1:]
+    if "--out" in args:  # write elsewhere (tests compare a fresh conversion with the committed file)
+        i = args.index("--out")
+        out = args[i + 1]
+        del args[i:i + 2]
+    files = [a for a in args if not a.startswith("--")] or sorted(glob.glob(os.path.join(SRC, "*.clip")))
     try:
         clips = {}
         for p in files:
@@ -717,8 +741,8 @@ def main(argv):
         print(f"note: {n}: {k} joint rotations clamped to the boxer's joint limits")
     print(f"{len(clips)} clips ok; worst IK sole error {worst * 1000:.3f} mm")
     if not check:
-        write_gltf(clips, posed, OUT)
-        print(f"wrote {os.path.relpath(OUT, ROOT)}")
+        write_gltf(clips, posed, out)
+        print(f"wrote {os.path.relpath(out, ROOT)}")
     return 0
 
 

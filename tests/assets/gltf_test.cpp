@@ -30,10 +30,12 @@ void expect_cube(const eng::assets::GltfScene& s) {
     EXPECT_FLOAT_EQ(std::abs(v.y), 0.5f);
     EXPECT_FLOAT_EQ(std::abs(v.z), 0.5f);
   }
-  // First face is +X: interleaved normal (stride 24) must read back as (1, 0, 0).
-  EXPECT_FLOAT_EQ(p.normals[0].x, 1.f);
-  EXPECT_FLOAT_EQ(p.normals[0].y, 0.f);
-  EXPECT_FLOAT_EQ(p.positions[0].x, 0.5f);
+  // First face is the file's +X, which is the engine's +Y (glTF's left = the engine's left; frame.h):
+  // the interleaved normal (stride 24) must read back as (0, 1, 0).
+  EXPECT_FLOAT_EQ(p.normals[0].x, 0.f);
+  EXPECT_FLOAT_EQ(p.normals[0].y, 1.f);
+  EXPECT_FLOAT_EQ(p.normals[0].z, 0.f);
+  EXPECT_FLOAT_EQ(p.positions[0].y, 0.5f);
   EXPECT_EQ(p.indices[0], 0u);
   EXPECT_EQ(p.indices[35], 23u);
   for (uint32_t i : p.indices) EXPECT_LT(i, 24u);
@@ -84,18 +86,24 @@ TEST(Gltf, HierarchyParentsExtrasAndWorldMatrix) {
   EXPECT_DOUBLE_EQ(s.nodes[1].extras["physics"]["mass"].get<double>(), 1.5);
   EXPECT_EQ(s.extras["level"], "test");
   EXPECT_EQ(s.extras["version"], 2);
-  // Rotation is stored xyzw in the file, glm (w, x, y, z) in memory: 90 deg about Z.
+  // Rotation is stored xyzw in the file, glm (w, x, y, z) in memory: 90 deg about the file's Z (glTF's
+  // forward), which is the engine's X. Translations (1, 0, 0) and (0, 2, 0) in the file are the engine's
+  // (0, 1, 0) and (0, 0, 2): engine (x, y, z) = glTF (z, x, y).
   EXPECT_NEAR(s.nodes[1].rotation.w, 0.7071068f, 1e-6f);
-  EXPECT_NEAR(s.nodes[1].rotation.z, 0.7071068f, 1e-6f);
+  EXPECT_NEAR(s.nodes[1].rotation.x, 0.7071068f, 1e-6f);
+  EXPECT_FLOAT_EQ(s.nodes[0].translation.y, 1.f);
+  EXPECT_FLOAT_EQ(s.nodes[1].translation.z, 2.f);
   EXPECT_FLOAT_EQ(s.nodes[1].scale.x, 2.f);
   const glm::mat4 w = s.world_matrix(1);
-  const glm::vec4 o = w * glm::vec4(0, 0, 0, 1);
-  EXPECT_NEAR(o.x, 1.f, 1e-5f);
-  EXPECT_NEAR(o.y, 2.f, 1e-5f);
-  const glm::vec4 x = w * glm::vec4(1, 0, 0, 1);  // scale 2, rotate to +Y, + (0,2,0), + (1,0,0)
-  EXPECT_NEAR(x.x, 1.f, 1e-5f);
-  EXPECT_NEAR(x.y, 4.f, 1e-5f);
-  EXPECT_NEAR(x.z, 0.f, 1e-5f);
+  const glm::vec4 o = w * glm::vec4(0, 0, 0, 1);  // file (1, 2, 0)
+  EXPECT_NEAR(o.x, 0.f, 1e-5f);
+  EXPECT_NEAR(o.y, 1.f, 1e-5f);
+  EXPECT_NEAR(o.z, 2.f, 1e-5f);
+  // The file's (1, 0, 0): scale 2, rotate to the file's +Y, + (0, 2, 0), + (1, 0, 0) = file (1, 4, 0).
+  const glm::vec4 x = w * glm::vec4(0, 1, 0, 1);
+  EXPECT_NEAR(x.x, 0.f, 1e-5f);
+  EXPECT_NEAR(x.y, 1.f, 1e-5f);
+  EXPECT_NEAR(x.z, 4.f, 1e-5f);
   const glm::vec4 bad = s.world_matrix(99) * glm::vec4(1, 2, 3, 1);
   EXPECT_FLOAT_EQ(bad.y, 2.f);  // identity for an invalid index
 }
@@ -116,13 +124,15 @@ TEST(Gltf, AnimationChannels) {
   ASSERT_EQ(rot.values.size(), 12u);
   EXPECT_FLOAT_EQ(rot.times[1], 0.5f);
   EXPECT_FLOAT_EQ(rot.values[3], 1.f);          // key 0: identity, xyzw
-  EXPECT_FLOAT_EQ(rot.values[6], 0.3826834f);   // key 1: z
+  EXPECT_FLOAT_EQ(rot.values[4], 0.3826834f);   // key 1: the file's z is the engine's x
+  EXPECT_FLOAT_EQ(rot.values[6], 0.f);
   EXPECT_FLOAT_EQ(rot.values[11], 0.7071068f);  // key 2: w
   const auto& tr = a.channels[1];
   EXPECT_EQ(tr.path, "translation");
   EXPECT_EQ(tr.interpolation, "STEP");
   ASSERT_EQ(tr.values.size(), 6u);
-  EXPECT_FLOAT_EQ(tr.values[5], 1.f);
+  EXPECT_FLOAT_EQ(tr.values[3], 1.f);  // key 1: the file's (0, 0, 1) is the engine's (1, 0, 0)
+  EXPECT_FLOAT_EQ(tr.values[5], 0.f);
 }
 
 TEST(Gltf, MissingFileNamesThePath) {
@@ -203,7 +213,8 @@ TEST(Gltf, BoxerContentLoads) {
     for (const auto& mat : r->materials) found = found || mat.name == m;
     EXPECT_TRUE(found) << m;
   }
-  // Rest pose: root joint at z = 0.97, glove wrist at 0.97 + 0.10 + 0.18 + 0.19 - 0.30 - 0.26.
+  // Rest pose in the engine's frame (Z up): root joint at z = 0.97, glove wrist at
+  // 0.97 + 0.10 + 0.18 + 0.19 - 0.30 - 0.26.
   const glm::vec4 root = r->world_matrix(r->find_node("pelvis")) * glm::vec4(0, 0, 0, 1);
   EXPECT_NEAR(root.z, 0.97f, 1e-6f);
   const glm::vec4 wrist = r->world_matrix(r->find_node("glove_l")) * glm::vec4(0, 0, 0, 1);

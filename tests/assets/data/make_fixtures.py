@@ -4,6 +4,8 @@
     python3 tests/assets/data/make_fixtures.py
 
 Each fixture is small enough to read by eye; the broken ones are broken on purpose.
+Numbers here are in glTF's frame (+Y up, +Z forward); load_gltf returns them in the engine's
+(engine (x, y, z) = glTF (z, x, y), engine/assets/frame.h), which is what the tests expect.
 """
 import base64
 import json
