@@ -11,6 +11,8 @@
 
 #include "engine/platform/window.h"
 #include "engine/render/renderer.h"
+#include "engine/ui/ui.h"
+#include "game/hud.h"
 #include "game/scene_view.h"
 #include "game/world.h"
 
@@ -110,8 +112,15 @@ eng::Result<HeadlessRun> run_headless(const Options& o) {
     if (!last && !every) continue;
     const auto t1 = clock_type::now();
     fill_frame(w, view, f);
-    f.frame_ms = float(sim.ms.back());
-    f.overlay_lines = {"t = " + std::to_string(w.data.time) + " s", "scenario " + o.scenario};
+    if (f.overlay) {  // no input headless: the panel only shows
+      eng::ui::UiInput in;
+      in.display_width = float(o.width);
+      in.display_height = float(o.height);
+      eng::ui::ui_begin(r.ui(), in);
+      draw_stats_panel({float(sim.ms.back()), r.device_name(),
+                        {"t = " + std::to_string(w.data.time) + " s", "scenario " + o.scenario}});
+      eng::ui::ui_end(r.ui());
+    }
     if (auto ok = r.render(f); !ok) return eng::make_error("boxing: rendering failed: " + ok.error());
     auto img = r.read_back();
     if (!img) return eng::make_error("boxing: reading the frame back failed: " + img.error());
@@ -191,22 +200,34 @@ int run_windowed(const Options& o) {
   double accumulator = 0.0;
   auto last = clock_type::now();
   glm::dvec2 last_mouse = win.mouse_position();
+  auto last_ui = clock_type::now();
   while (!win.should_close()) {
     win.poll_events();
-    if (win.key_pressed(GLFW_KEY_ESCAPE)) win.request_close();
-    if (win.key_pressed(GLFW_KEY_H)) overlay = !overlay;
-    if (win.key_pressed(GLFW_KEY_G)) view.ghost = !view.ghost;
-    if (win.key_pressed(GLFW_KEY_C)) {
-      camera_index = (camera_index + 1) % 4;
-      orbit.from(camera_preset(cameras[camera_index], w));
+    // The UI frame opens first: it says whether this frame's mouse and keys belong to a panel or to the scene; the
+    // panels are built after the simulation (they show its time) and the frame ends before rendering.
+    const auto ui_now = clock_type::now();
+    const float ui_dt = std::max(1e-4f, std::chrono::duration<float>(ui_now - last_ui).count());
+    last_ui = ui_now;
+    eng::ui::ui_begin(r.ui(), win.ui_input(ui_dt));
+    const bool ui_mouse = eng::ui::ui_wants_mouse(r.ui()), ui_keys = eng::ui::ui_wants_keyboard(r.ui());
+    if (!ui_keys) {
+      if (win.key_pressed(GLFW_KEY_ESCAPE)) win.request_close();
+      if (win.key_pressed(GLFW_KEY_H)) overlay = !overlay;
+      if (win.key_pressed(GLFW_KEY_G)) view.ghost = !view.ghost;
+      if (win.key_pressed(GLFW_KEY_C)) {
+        camera_index = (camera_index + 1) % 4;
+        orbit.from(camera_preset(cameras[camera_index], w));
+      }
     }
     const glm::dvec2 mouse = win.mouse_position();
-    if (win.mouse_button_down(GLFW_MOUSE_BUTTON_RIGHT)) {
-      orbit.yaw -= float(mouse.x - last_mouse.x) * 0.006f;
-      orbit.pitch = std::clamp(orbit.pitch + float(mouse.y - last_mouse.y) * 0.006f, -0.1f, 1.5f);
+    if (!ui_mouse) {  // drags and the wheel over a panel are the panel's
+      if (win.mouse_button_down(GLFW_MOUSE_BUTTON_RIGHT)) {
+        orbit.yaw -= float(mouse.x - last_mouse.x) * 0.006f;
+        orbit.pitch = std::clamp(orbit.pitch + float(mouse.y - last_mouse.y) * 0.006f, -0.1f, 1.5f);
+      }
+      orbit.dist = std::clamp(orbit.dist * std::pow(0.9f, float(win.scroll_delta().y)), 1.0f, 20.0f);
     }
     last_mouse = mouse;
-    orbit.dist = std::clamp(orbit.dist * std::pow(0.9f, float(win.scroll_delta().y)), 1.0f, 20.0f);
 
     // Fixed 60 Hz simulation frames, as many as real time asks for (at most 4 per rendered frame, so a slow
     // machine runs in slow motion instead of spiralling).
@@ -221,14 +242,16 @@ int run_windowed(const Options& o) {
       ++frames;
     }
     if (o.seconds > 0 && w.data.time >= o.seconds) win.request_close();
+    if (overlay)
+      draw_stats_panel({render.ms.empty() ? 0.0f : float(render.ms.back()), r.device_name(),
+                        {"t = " + std::to_string(w.data.time).substr(0, 6) + " s   scenario " + o.scenario,
+                         "F12 screenshot  H overlay  G ghost  C camera  Esc quit"}});
+    eng::ui::ui_end(r.ui());
     if (win.minimized()) continue;
     const auto t1 = clock_type::now();
     fill_frame(w, view, f);
     f.camera = orbit.to(camera_preset(cameras[camera_index], w));
     f.overlay = overlay;
-    f.frame_ms = render.ms.empty() ? 0.0f : float(render.ms.back());
-    f.overlay_lines = {"t = " + std::to_string(w.data.time).substr(0, 6) + " s   scenario " + o.scenario,
-                       "F12 screenshot  H overlay  G ghost  C camera  Esc quit"};
     if (auto ok = r.render(f); !ok) {
       std::fprintf(stderr, "boxing: rendering failed: %s\n", ok.error().c_str());
       return 1;

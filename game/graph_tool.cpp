@@ -7,6 +7,7 @@
 #include "engine/anim/motion_graph.h"
 #include "engine/assets/character.h"
 #include "engine/assets/gltf.h"
+#include "game/boxing_motion.h"
 #include "game/world.h"
 
 namespace boxing {
@@ -29,7 +30,7 @@ int run_graph_tool(const Options& o) {
     return 1;
   }
   eng::anim::MotionGraph graph;
-  graph.build(*clips, eng::anim::GraphOptions{}, desc->skeleton);
+  graph.build(*clips, eng::anim::GraphOptions{}, boxing_graph_options(desc->skeleton), desc->skeleton);
   const nlohmann::json report = eng::anim::graph_report(graph);
   auto write = [](const std::string& path, const std::string& text) {
     std::ofstream f(path);

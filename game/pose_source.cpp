@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "game/boxing_motion.h"
+
 namespace boxing {
 
 PoseSource PoseSource::looping_clip(const eng::anim::Clip& clip) {
@@ -12,7 +14,7 @@ PoseSource PoseSource::looping_clip(const eng::anim::Clip& clip) {
 
 PoseSource PoseSource::graph_walk(const eng::anim::MotionGraph& graph, uint64_t seed) {
   PoseSource s;
-  s.walker_ = std::make_unique<eng::anim::GraphWalker>(graph, seed, "guard");
+  s.walker_ = std::make_unique<eng::anim::GraphWalker>(graph, seed, kGuardClip);
   return s;
 }
 

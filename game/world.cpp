@@ -9,6 +9,7 @@
 #include "engine/control/implicit_servo.h"
 #include "engine/physics/dynamics.h"
 #include "engine/physics/step.h"
+#include "game/boxing_motion.h"
 #include "game/rng.h"
 
 namespace boxing {
@@ -239,7 +240,8 @@ eng::Result<std::unique_ptr<World>> make_world(const Options& o) {
     }
   } else {
     if (o.scenario == "graph-walk" || o.scenario == "match")
-      w->graph.build(w->clips, eng::anim::GraphOptions{}, w->boxer_desc.skeleton);
+      w->graph.build(w->clips, eng::anim::GraphOptions{}, boxing_graph_options(w->boxer_desc.skeleton),
+                     w->boxer_desc.skeleton);
     add_boxer(*w, 0, Eigen::Vector3f(0.75f, 0.08f, 0.06f), false, w->arena.stances[0]);
     // graph-walk: one boxer tracking the walk alone (issue: the servo against a 10-minute random walk).
     if (o.scenario != "graph-walk") add_boxer(*w, 1, Eigen::Vector3f(0.06f, 0.18f, 0.75f), false, w->arena.stances[1]);

@@ -177,8 +177,8 @@ eng::Result<std::vector<Clip>> load_clips(const std::string& path, const Skeleto
     if (ex.contains("next") && ex["next"].is_array())
       for (const auto& t : ex["next"])
         if (t.is_string()) c.next.push_back(t.get<std::string>());
-    if (c.has_tag("punch") && (c.glove < 0 || c.impact_time < 0))
-      return fail(a.name, "missing metadata: punches need extras.glove and extras.impact");
+    if ((c.glove >= 0) != (c.impact_time >= 0))
+      return fail(a.name, "missing metadata: a strike needs both extras.glove and extras.impact");
 
     // key times: those of the root translation channel; every channel must share them
     const eng::assets::GltfChannel* root_ch = nullptr;
@@ -227,9 +227,8 @@ eng::Result<std::vector<Clip>> load_clips(const std::string& path, const Skeleto
       for (size_t k = 1; k < nk; ++k)
         if (c.keys[k].rotation[b].dot(c.keys[k - 1].rotation[b]) < 0)
           c.keys[k].rotation[b].coeffs() = -c.keys[k].rotation[b].coeffs();
-    if (c.has_tag("punch") && !(c.impact_time > 0 && c.impact_time < c.duration()))
+    if (c.impact_time >= 0 && !(c.impact_time > 0 && c.impact_time < c.duration()))
       return fail(a.name, "impact time outside the clip");
-    if (c.next.empty()) c.next.push_back("guard");
     out.push_back(std::move(c));
   }
   for (const auto& c : out)

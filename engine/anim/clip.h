@@ -29,11 +29,11 @@ namespace eng::anim {
 
 struct Clip {
   std::string name;
-  std::vector<std::string> tags;  // guard punch defence footwork reaction fall down getup
+  std::vector<std::string> tags;  // free-form labels the game gives meaning to (steering, graph options)
   bool loop = false;
-  int glove = -1;                 // striking glove bone index for punches, else -1
-  double impact_time = -1.0;      // seconds from the start, punches only
-  std::vector<std::string> next;  // natural continuations: clips that may follow the clip's end
+  int glove = -1;                 // striking bone index for strikes (extras.glove), else -1
+  double impact_time = -1.0;      // strikes: seconds from the start to the impact (extras.impact), else -1
+  std::vector<std::string> next;  // natural continuations: clips that may follow the clip's end (may be empty)
   std::vector<double> key_times;  // seconds, key_times[0] == 0, increasing
   std::vector<Pose> keys;         // one pose per key time
 
@@ -52,7 +52,8 @@ Eigen::Vector3d angular_velocity_between(const Eigen::Quaterniond& qa, const Eig
 
 // Loads every glTF animation of the file as a Clip. Errors name the file and the problem: missing
 // or broken file, a channel on a node that is not a skeleton bone, missing metadata (extras.tags,
-// extras.loop; glove + impact for punches), channels with different key times, no pelvis translation.
+// extras.loop; glove and impact come together), channels with different key times, no translation on the
+// root bone.
 eng::Result<std::vector<Clip>> load_clips(const std::string& gltf_path, const Skeleton& skeleton);
 
 // Index of the clip with this name, -1 when none.

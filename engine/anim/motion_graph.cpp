@@ -69,11 +69,12 @@ Align2D align_2d(const std::vector<Vector3d>& a, const std::vector<Vector3d>& b,
 namespace {
 
 // Clips entered only through force_clip (hits, knockdowns) or a natural continuation, never by a
-// random transition: a boxer must not flinch or fall without being hit.
-bool is_entry_only(const Clip& c) {
-  return c.has_tag("fall") || c.has_tag("down") || c.has_tag("getup") || c.has_tag("reaction");
+// random transition (a boxer must not flinch or fall without being hit), and clips never left by one.
+bool has_any_tag(const Clip& c, const std::vector<std::string>& tags) {
+  for (const auto& t : tags)
+    if (c.has_tag(t)) return true;
+  return false;
 }
-bool is_source_excluded(const Clip& c) { return c.has_tag("fall") || c.has_tag("down"); }
 
 Pose blend_pose(const Pose& a, const Pose& b, double w) {
   Pose out;
@@ -102,21 +103,18 @@ std::vector<Vector3d> MotionGraph::point_cloud(const Pose& p) const {
   std::vector<Quaterniond> wr;
   forward_kinematics(skeleton, p, &wp, &wr);
   std::vector<Vector3d> pts = wp;
-  auto extra = [&](const char* bone, const Vector3d& off) {
-    const int b = skeleton.find(bone);
-    if (b >= 0) pts.push_back(wp[b] + wr[b] * off);
-  };
-  extra("glove_l", Vector3d(0, 0, -0.08));
-  extra("glove_r", Vector3d(0, 0, -0.08));
-  extra("foot_l", Vector3d(0.14, 0, -0.08));
-  extra("foot_r", Vector3d(0.14, 0, -0.08));
-  extra("head", Vector3d(0, 0, 0.2));
+  for (const FeaturePoint& fp : content.feature_points) {
+    const int b = skeleton.find(fp.bone);
+    if (b >= 0) pts.push_back(wp[b] + wr[b] * fp.offset);
+  }
   return pts;
 }
 
-void MotionGraph::build(const std::vector<Clip>& cl, const GraphOptions& opt, const Skeleton& sk) {
+void MotionGraph::build(const std::vector<Clip>& cl, const GraphOptions& opt, const MotionGraphOptions& co,
+                        const Skeleton& sk) {
   clips = cl;
   options = opt;
+  content = co;
   skeleton = sk;
   nodes.clear();
   edges.clear();
@@ -151,9 +149,9 @@ void MotionGraph::build(const std::vector<Clip>& cl, const GraphOptions& opt, co
   transitions_before_prune = 0;
   std::vector<Vector3d> wa, wb;
   for (int a = 0; a < C; ++a) {
-    if (is_source_excluded(clips[a])) continue;
+    if (has_any_tag(clips[a], content.no_source_tags)) continue;
     for (int b = 0; b < C; ++b) {
-      if (is_entry_only(clips[b])) continue;
+      if (has_any_tag(clips[b], content.entry_only_tags)) continue;
       const int na = frame_count[a] - k + 1, nb = frame_count[b] - k + 1;
       if (na <= 0 || nb <= 0) continue;
       std::vector<double> D(static_cast<size_t>(na) * nb);
@@ -205,10 +203,10 @@ void MotionGraph::build(const std::vector<Clip>& cl, const GraphOptions& opt, co
   mean_rms = candidate_pairs ? sum_rms / candidate_pairs : 0.0;
 
   // natural continuations and knockdown edges
-  const int guard = clip_index("guard");
+  const int home = clip_index(content.home_clip);
   for (int a = 0; a < C; ++a) {
     std::vector<std::string> next = clips[a].next;
-    if (next.empty()) next.push_back(clips[a].loop ? clips[a].name : "guard");
+    if (next.empty()) next.push_back(clips[a].loop || home < 0 ? clips[a].name : content.home_clip);
     const int last = frame_count[a] - 1;
     const Pose pa = sample_clip_pose(clips[a], clips[a].duration());
     for (const auto& nn : next) {
@@ -220,12 +218,12 @@ void MotionGraph::build(const std::vector<Clip>& cl, const GraphOptions& opt, co
       e.align = align_2d(point_cloud(pa), cloud[b][0]);
       edges[node(a, last)].push_back(e);
     }
-    if ((clips[a].has_tag("fall") || clips[a].has_tag("reaction")) && guard >= 0) {
+    if (has_any_tag(clips[a], content.forced_entry_tags) && home >= 0) {
       GraphEdge e;
       e.to = node(a, 0);
       e.kind = EdgeKind::Knockdown;
-      e.align = align_2d(cloud[guard][0], cloud[a][0]);
-      edges[node(guard, 0)].push_back(e);
+      e.align = align_2d(cloud[home][0], cloud[a][0]);
+      edges[node(home, 0)].push_back(e);
     }
   }
 
@@ -291,7 +289,7 @@ void MotionGraph::build(const std::vector<Clip>& cl, const GraphOptions& opt, co
 // ------------------------------------------------------------------------------------------ walker
 GraphWalker::GraphWalker(const MotionGraph& g, uint64_t seed, const std::string& start_clip)
     : g_(&g), rng_(seed) {
-  clip_ = std::max(0, g.clip_index(start_clip));
+  clip_ = std::max(0, g.clip_index(start_clip.empty() ? g.content.home_clip : start_clip));
 }
 
 double GraphWalker::uniform() { return static_cast<double>(rng_() >> 11) * (1.0 / 9007199254740992.0); }
@@ -385,7 +383,7 @@ PoseSample GraphWalker::tick(double dt) {
     blend_.elapsed += dt;
     if (blend_.elapsed >= blend_.duration) blend_.active = false;
   }
-  for (int guard = 0; guard < 1000; ++guard) {
+  for (int iter = 0; iter < 1000; ++iter) {  // bounded: a zero-length clip cannot spin forever
     const int n = g_->frame_count[clip_];
     const Clip& c = g_->clips[clip_];
     if (frame_ + 1 < n && time_ >= g_->frame_time(frame_ + 1)) {

@@ -1,13 +1,18 @@
 #pragma once
-// Motion graph (Kovar, Gleicher, Pighin 2002, "Motion Graphs") over the boxing clips, plus a
+// Motion graph (Kovar, Gleicher, Pighin 2002, "Motion Graphs") over a set of clips, plus a
 // random-walk player (GraphWalker) with steering (request_tag / request_clip) and knockdowns
 // (force_clip), in the spirit of the boxers of Jenkins/Wrotek/McGuire (random motion-graph traversal
 // of punches plus a stand-up motion).
+// The graph knows no character: which extra points describe a pose, which clip tags are entered only by
+// force, and the home clip come from MotionGraphOptions, filled by the game (game/boxing_motion.h). With
+// the default (empty) options the features are the joint positions alone, every clip is a transition
+// source and destination, there are no knockdown edges, and walks start at clip 0.
 //
 // Construction (MotionGraph::build):
 //  * Frames: every clip sampled at GraphOptions::fps (30 Hz): node (clip, frame), frame f at f/fps.
-//  * Frame features: a point cloud per frame by forward kinematics: the 16 joint positions plus the
-//    glove centres, the toes and the top of the head (21 points), in clip space.
+//  * Frame features: a point cloud per frame by forward kinematics: every joint position plus the
+//    MotionGraphOptions::feature_points (bone + offset in the bone frame; the boxer adds the glove centres,
+//    the toes and the top of the head: 16 + 5 = 21 points), in clip space.
 //  * Distance D(A_i, B_j): sum of squared distances between the point clouds of the windows
 //    A_i..A_{i+k-1} and B_j..B_{j+k-1} (k = GraphOptions::window = 5 frames, ~0.17 s), uniform weights,
 //    after the optimal rigid 2D alignment of B onto A (rotation about the vertical Z axis plus a
@@ -17,18 +22,20 @@
 //    with rms < GraphOptions::threshold_rms. Default 4 cm: below that a 5-frame slerp blend with the
 //    root aligned is invisible at game distance and well inside what the PD servos track; clips that
 //    pass through guard match at ~0-2 cm, distinct poses (mid-punch vs guard) sit at 10-30 cm.
-//    Sources: every clip except fall/down clips; destinations: every clip except fall/down/getup/
-//    reaction (those are only entered through force_clip -- a hit or a knockdown -- or a clip's
-//    natural continuation). Self-transitions need |i - j| >= 2k.
+//    Sources: every clip without a MotionGraphOptions::no_source_tags tag (boxer: fall, down);
+//    destinations: every clip without an entry_only_tags tag (boxer: fall, down, getup, reaction -- those
+//    are only entered through force_clip -- a hit or a knockdown -- or a clip's natural continuation).
+//    Self-transitions need |i - j| >= 2k.
 //  * A transition edge A_i -> B_{j+k-1} plays A_i..A_{i+k-1} blended into the aligned
 //    B_j..B_{j+k-1} with the C1 ease weight w = 3u^2 - 2u^3 (the paper's alpha = 1 - w),
 //    slerp per joint, lerp of the aligned root.
-//  * Natural continuations: the last frame of a clip -> frame 0 of each clip in Clip::next
-//    (loops -> themselves, punches -> guard, fall_back -> down_back -> down_back | getup_back ...),
+//  * Natural continuations: the last frame of a clip -> frame 0 of each clip in Clip::next (when empty:
+//    a loop -> itself, else the home clip; boxer: punches -> guard, fall_back -> down_back -> down_back |
+//    getup_back ...),
 //    root aligned with the same 2D alignment of the two frames' point clouds, no blend (the clips are
 //    authored to meet exactly).
-//  * Knockdown (forced-entry) edges: virtual edges guard frame 0 -> frame 0 of every fall and
-//    reaction clip. The game enters those clips with force_clip (from any frame) when a boxer is hit
+//  * Knockdown (forced-entry) edges: virtual edges home clip frame 0 -> frame 0 of every clip with a
+//    forced_entry_tags tag (boxer: fall, reaction). The game enters those clips with force_clip (from any frame) when a boxer is hit
 //    or knocked down; these edges only make them count as reachable when pruning. The random walk
 //    and the planner never take them.
 //  * Pruning: the largest strongly connected component (iterative Tarjan) is kept; nodes outside are
@@ -63,6 +70,21 @@ struct GraphOptions {
   double min_self_gap_windows = 2.0;
 };
 
+// A feature point beyond the joint positions: a point fixed to a bone (offset in the bone's frame, m).
+struct FeaturePoint {
+  std::string bone;
+  Eigen::Vector3d offset = Eigen::Vector3d::Zero();
+};
+
+// What the clips mean to the graph: given by the game, neutral by default (see the header comment).
+struct MotionGraphOptions {
+  std::vector<FeaturePoint> feature_points;     // added to every joint position, in this order
+  std::vector<std::string> entry_only_tags;     // clips never entered by a random transition
+  std::vector<std::string> no_source_tags;      // clips never left by a random transition
+  std::vector<std::string> forced_entry_tags;   // clips given a knockdown edge from the home clip
+  std::string home_clip;  // walk start, continuation of a non-loop clip without next, knockdown source
+};
+
 enum class EdgeKind { Next, Transition, Continuation, Knockdown };
 
 struct GraphEdge {
@@ -82,6 +104,7 @@ struct GraphNode {
 struct MotionGraph {
   std::vector<Clip> clips;
   GraphOptions options;
+  MotionGraphOptions content;
   Skeleton skeleton;
   std::vector<GraphNode> nodes;
   std::vector<std::vector<GraphEdge>> edges;  // out edges per node
@@ -95,8 +118,8 @@ struct MotionGraph {
   double mean_rms = 0.0;    // mean window distance over all compared pairs (m)
   int scc_size = 0;
 
-  void build(const std::vector<Clip>& clips, const GraphOptions& options,
-             const Skeleton& skeleton = boxer_skeleton());
+  void build(const std::vector<Clip>& clips, const GraphOptions& options, const MotionGraphOptions& content,
+             const Skeleton& skeleton);
   int node(int clip, int frame) const { return first_node[clip] + frame; }
   int clip_index(const std::string& name) const { return find_clip(clips, name); }
   double frame_time(int frame) const { return frame / options.fps; }
@@ -107,7 +130,8 @@ struct MotionGraph {
 // Seeded random walk over a MotionGraph producing desired poses for the servos.
 class GraphWalker {
  public:
-  GraphWalker(const MotionGraph& g, uint64_t seed, const std::string& start_clip = "guard");
+  // start_clip empty: the graph's home clip (MotionGraphOptions::home_clip); unknown: clip 0.
+  GraphWalker(const MotionGraph& g, uint64_t seed, const std::string& start_clip = {});
 
   // Advances by dt and returns the desired pose: parent-space rotations, world root pose (root
   // motion accumulated along the walk with the 2D alignment at every transition), root velocity and

@@ -4,32 +4,6 @@
 
 namespace eng::anim {
 
-Skeleton boxer_skeleton() {
-  Skeleton s;
-  auto add = [&](const char* n, int p, double x, double y, double z) {
-    s.name.push_back(n);
-    s.parent.push_back(p);
-    s.offset.emplace_back(x, y, z);
-  };
-  add("pelvis", -1, 0, 0, 0.97);
-  add("abdomen", 0, 0, 0, 0.10);
-  add("chest", 1, 0, 0, 0.18);
-  add("head", 2, 0, 0, 0.25);
-  add("upper_arm_l", 2, 0, 0.19, 0.19);
-  add("forearm_l", 4, 0, 0, -0.30);
-  add("glove_l", 5, 0, 0, -0.26);
-  add("upper_arm_r", 2, 0, -0.19, 0.19);
-  add("forearm_r", 7, 0, 0, -0.30);
-  add("glove_r", 8, 0, 0, -0.26);
-  add("thigh_l", 0, 0, 0.09, -0.04);
-  add("shank_l", 10, 0, 0, -0.43);
-  add("foot_l", 11, 0, 0, -0.42);
-  add("thigh_r", 0, 0, -0.09, -0.04);
-  add("shank_r", 13, 0, 0, -0.43);
-  add("foot_r", 14, 0, 0, -0.42);
-  return s;
-}
-
 void forward_kinematics(const Skeleton& s, const Pose& p, std::vector<Eigen::Vector3d>* world_pos,
                         std::vector<Eigen::Quaterniond>* world_rot) {
   const int n = s.size();

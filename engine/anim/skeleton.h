@@ -1,7 +1,7 @@
 #pragma once
 // Skeleton and Pose: the data shared by animation (clips, motion graph) and control (servos).
 // CONTRACT: anim produces Poses, control consumes them; neither depends on physics.
-// Bone 0 is the root (pelvis). parent[i] < i for every i > 0 (topological order), parent[0] == -1.
+// Bone 0 is the root. parent[i] < i for every i > 0 (topological order), parent[0] == -1.
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <string>
@@ -39,10 +39,6 @@ struct PoseSample {
 }  // namespace eng::anim
 
 namespace eng::anim {
-
-// The 16-bone boxer skeleton (names/offsets as in content/boxer/boxer.gltf and
-// content/clips/boxing_clips.gltf). For tests and tools; the game reads the skeleton from content.
-Skeleton boxer_skeleton();
 
 // Forward kinematics: world joint positions and world bone orientations of a parent-space pose.
 void forward_kinematics(const Skeleton& s, const Pose& p, std::vector<Eigen::Vector3d>* world_pos,

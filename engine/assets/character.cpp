@@ -192,8 +192,15 @@ double CharacterDesc::total_mass() const {
 
 eng::Result<CharacterDesc> load_character(const GltfScene& scene, const std::string& root_node) {
   const std::string where = "character in '" + scene.path + "': ";
-  const int root = scene.find_node(root_node);
-  if (root < 0) return eng::make_error(where + "no node named '" + root_node + "' (the character root)");
+  int root = -1;
+  if (root_node.empty()) {
+    for (size_t i = 0; i < scene.nodes.size() && root < 0; ++i)
+      if (scene.nodes[i].parent < 0) root = static_cast<int>(i);
+    if (root < 0) return eng::make_error(where + "no root node (the character root)");
+  } else {
+    root = scene.find_node(root_node);
+    if (root < 0) return eng::make_error(where + "no node named '" + root_node + "' (the character root)");
+  }
   CharacterDesc d;
   try {
     // Depth-first pre-order with an explicit stack: (node, parent bone index).

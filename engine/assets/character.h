@@ -52,6 +52,7 @@ struct CharacterDesc {
 // parent[i] < i. Every node under the root is a bone and must carry extras.physics with a known
 // joint type, positive mass and inertia and at least one shape; bones must have identity rest
 // rotation and unit scale (offset = node translation). Errors name the file, node and field.
-eng::Result<CharacterDesc> load_character(const GltfScene& scene, const std::string& root_node = "pelvis");
+// root_node empty: the file's first root node (the first node without a parent).
+eng::Result<CharacterDesc> load_character(const GltfScene& scene, const std::string& root_node = {});
 
 }  // namespace eng::assets

@@ -46,6 +46,8 @@ eng::Result<std::unique_ptr<Window>> Window::create(const WindowConfig& cfg) {
   glfwSetKeyCallback(w->window_, &Window::on_key);
   glfwSetScrollCallback(w->window_, &Window::on_scroll);
   glfwSetFramebufferSizeCallback(w->window_, &Window::on_framebuffer_size);
+  glfwSetMouseButtonCallback(w->window_, &Window::on_mouse_button);
+  glfwSetCharCallback(w->window_, &Window::on_char);
   return w;
 }
 
@@ -56,6 +58,8 @@ Window::~Window() {
 void Window::poll_events() {
   pressed_.clear();
   scroll_ = glm::dvec2(0.0);
+  for (bool& c : clicked_) c = false;
+  chars_.clear();
   glfwPollEvents();
 }
 
@@ -95,6 +99,45 @@ glm::dvec2 Window::mouse_position() const {
 bool Window::mouse_button_down(int button) const { return glfwGetMouseButton(window_, button) == GLFW_PRESS; }
 glm::dvec2 Window::scroll_delta() const { return scroll_; }
 
+eng::ui::UiInput Window::ui_input(float dt) const {
+  eng::ui::UiInput in;
+  const glm::ivec2 fb = framebuffer_size();
+  int ww = 0, wh = 0;
+  glfwGetWindowSize(window_, &ww, &wh);
+  in.display_width = static_cast<float>(fb.x);
+  in.display_height = static_cast<float>(fb.y);
+  in.dt = dt;
+  if (glfwGetWindowAttrib(window_, GLFW_HOVERED) == GLFW_TRUE && ww > 0 && wh > 0) {
+    // cursor positions are in screen coordinates; the UI is laid out in framebuffer pixels (HiDPI scale)
+    const glm::dvec2 m = mouse_position();
+    in.mouse_x = static_cast<float>(m.x * fb.x / ww);
+    in.mouse_y = static_cast<float>(m.y * fb.y / wh);
+  }
+  const int buttons[3] = {GLFW_MOUSE_BUTTON_LEFT, GLFW_MOUSE_BUTTON_RIGHT, GLFW_MOUSE_BUTTON_MIDDLE};
+  for (int b = 0; b < 3; ++b) in.mouse_down[b] = clicked_[b] || mouse_button_down(buttons[b]);
+  in.wheel_x = static_cast<float>(scroll_.x);
+  in.wheel_y = static_cast<float>(scroll_.y);
+  using eng::ui::Key;
+  const struct {
+    Key key;
+    int glfw;
+  } keys[] = {{Key::Tab, GLFW_KEY_TAB},         {Key::Left, GLFW_KEY_LEFT},         {Key::Right, GLFW_KEY_RIGHT},
+              {Key::Up, GLFW_KEY_UP},           {Key::Down, GLFW_KEY_DOWN},         {Key::PageUp, GLFW_KEY_PAGE_UP},
+              {Key::PageDown, GLFW_KEY_PAGE_DOWN}, {Key::Home, GLFW_KEY_HOME},      {Key::End, GLFW_KEY_END},
+              {Key::Insert, GLFW_KEY_INSERT},   {Key::Delete, GLFW_KEY_DELETE},     {Key::Backspace, GLFW_KEY_BACKSPACE},
+              {Key::Space, GLFW_KEY_SPACE},     {Key::Enter, GLFW_KEY_ENTER},       {Key::Escape, GLFW_KEY_ESCAPE},
+              {Key::KeypadEnter, GLFW_KEY_KP_ENTER}, {Key::A, GLFW_KEY_A},          {Key::C, GLFW_KEY_C},
+              {Key::V, GLFW_KEY_V},             {Key::X, GLFW_KEY_X},               {Key::Y, GLFW_KEY_Y},
+              {Key::Z, GLFW_KEY_Z}};
+  for (const auto& k : keys) in.key_down[static_cast<int>(k.key)] = key_down(k.glfw);
+  in.ctrl = key_down(GLFW_KEY_LEFT_CONTROL) || key_down(GLFW_KEY_RIGHT_CONTROL);
+  in.shift = key_down(GLFW_KEY_LEFT_SHIFT) || key_down(GLFW_KEY_RIGHT_SHIFT);
+  in.alt = key_down(GLFW_KEY_LEFT_ALT) || key_down(GLFW_KEY_RIGHT_ALT);
+  in.super = key_down(GLFW_KEY_LEFT_SUPER) || key_down(GLFW_KEY_RIGHT_SUPER);
+  in.chars = chars_;
+  return in;
+}
+
 eng::Result<VkSurfaceKHR> Window::create_surface(VkInstance instance) const {
   VkSurfaceKHR surface = VK_NULL_HANDLE;
   const VkResult r = glfwCreateWindowSurface(instance, window_, nullptr, &surface);
@@ -119,6 +162,16 @@ void Window::on_key(GLFWwindow* gw, int key, int, int action, int) {
 void Window::on_scroll(GLFWwindow* gw, double dx, double dy) {
   auto* self = static_cast<Window*>(glfwGetWindowUserPointer(gw));
   if (self) self->scroll_ += glm::dvec2(dx, dy);
+}
+
+void Window::on_mouse_button(GLFWwindow* gw, int button, int action, int) {
+  auto* self = static_cast<Window*>(glfwGetWindowUserPointer(gw));
+  if (self && action == GLFW_PRESS && button >= 0 && button < 3) self->clicked_[button] = true;
+}
+
+void Window::on_char(GLFWwindow* gw, unsigned int codepoint) {
+  auto* self = static_cast<Window*>(glfwGetWindowUserPointer(gw));
+  if (self) self->chars_.push_back(codepoint);
 }
 
 void Window::on_framebuffer_size(GLFWwindow* gw, int, int) {

@@ -6,6 +6,7 @@
 #include <vulkan/vulkan.h>
 #include <glm/glm.hpp>
 #include "engine/core/result.h"
+#include "engine/ui/ui_input.h"
 
 struct GLFWwindow;
 
@@ -50,6 +51,11 @@ class Window {
   bool mouse_button_down(int glfw_button) const;
   glm::dvec2 scroll_delta() const;  // accumulated during the last poll_events()
 
+  // This frame's input for the UI (eng::ui::ui_begin): mouse in framebuffer pixels (the image the UI is drawn
+  // into), buttons held or pressed since the last poll, wheel and text of the last poll, UI keys and modifiers
+  // held, display size = framebuffer size. dt is the caller's frame time.
+  eng::ui::UiInput ui_input(float dt) const;
+
   eng::Result<VkSurfaceKHR> create_surface(VkInstance instance) const;
   // Instance extensions GLFW needs to present to this window system.
   static std::vector<const char*> required_instance_extensions();
@@ -60,10 +66,14 @@ class Window {
   static void on_key(GLFWwindow* w, int key, int scancode, int action, int mods);
   static void on_scroll(GLFWwindow* w, double dx, double dy);
   static void on_framebuffer_size(GLFWwindow* w, int width, int height);
+  static void on_mouse_button(GLFWwindow* w, int button, int action, int mods);
+  static void on_char(GLFWwindow* w, unsigned int codepoint);
 
   GLFWwindow* window_ = nullptr;
   std::vector<int> pressed_;
   glm::dvec2 scroll_{0.0};
+  bool clicked_[3] = {false, false, false};  // pressed during the last poll (latched for the UI)
+  std::vector<uint32_t> chars_;              // typed during the last poll
   bool resized_ = false;
 };
 

@@ -72,9 +72,7 @@ struct FrameDesc {
   std::vector<DebugLine> lines;
   std::vector<DebugPoint> points;
   bool ground = true;  // large ground plane at z=0 with a subtle grid/canvas look
-  bool overlay = false;
-  std::vector<std::string> overlay_lines;
-  float frame_ms = 0;
+  bool overlay = false;  // draw the renderer's last UI frame (Renderer::ui()) over the scene
 };
 
 }  // namespace eng::render

@@ -1,28 +1,23 @@
 #pragma once
-// Dear ImGui text overlay drawn into the resolved offscreen image (so screenshots include it). It needs no
-// input, so no platform backend is used: display size and time step are set by hand, which also keeps it
-// deterministic in headless tests.
-#include <string>
+// The UI overlay's Vulkan side: the Dear ImGui Vulkan backend attached to the renderer's eng::ui::Ui context,
+// recording the UI frame the game built (ui_begin .. ui_end, engine/ui/ui.h) into the overlay pass, on top of the
+// resolved offscreen image (so screenshots include it). It builds no windows and reads no input itself.
 #include <vulkan/vulkan.h>
-#include "engine/render/frame.h"
 #include "engine/render/vk_context.h"
-
-struct ImGuiContext;
+#include "engine/ui/ui.h"
 
 namespace eng::render {
 
 class Overlay {
  public:
-  eng::Result<void> init(const VkContext& ctx, VkRenderPass overlay_pass);
-  // Builds the UI for this frame and records its draw into the overlay render pass (already begun).
-  void record(VkCommandBuffer cmd, const FrameDesc& frame, VkExtent2D extent, const std::string& device);
-  void shutdown(const VkContext& ctx);
+  // Attaches the backend to ui's context and uploads its font atlas.
+  eng::Result<void> init(const VkContext& ctx, VkRenderPass overlay_pass, eng::ui::Ui& ui);
+  // Records the last ended UI frame (nothing when there is none) into the overlay render pass (already begun).
+  void record(VkCommandBuffer cmd, const eng::ui::Ui& ui);
+  void shutdown(const VkContext& ctx, eng::ui::Ui& ui);
 
  private:
   VkDescriptorPool pool_ = VK_NULL_HANDLE;
-  // Each renderer owns its ImGui context (the Vulkan backend keeps its state per context), so several renderers
-  // can coexist, e.g. in tests; it is made current around every ImGui call.
-  ImGuiContext* imgui_ = nullptr;
   bool ready_ = false;
 };
 

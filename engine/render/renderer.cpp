@@ -24,7 +24,7 @@ Renderer::Impl::~Impl() {
   if (!ctx) return;
   VkDevice dev = ctx->device;
   vkDeviceWaitIdle(dev);
-  overlay.shutdown(*ctx);
+  overlay.shutdown(*ctx, ui);
   for (auto& f : frames) {
     if (f.fence) vkDestroyFence(dev, f.fence, nullptr);
     if (f.image_ready) vkDestroySemaphore(dev, f.image_ready, nullptr);
@@ -47,7 +47,7 @@ Renderer::Impl::~Impl() {
 eng::Result<void> Renderer::Impl::init() {
   samples = pick_samples(ctx->props, cfg.msaa_samples);
   if (auto r = create_pipelines(*ctx, samples, pipes); !r) return r;
-  if (auto r = overlay.init(*ctx, pipes.overlay_pass); !r) return r;
+  if (auto r = overlay.init(*ctx, pipes.overlay_pass, ui); !r) return r;
 
   auto sm = ctx->create_image({kShadowSize, kShadowSize}, kShadowFormat,
                               VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
@@ -152,18 +152,18 @@ void Renderer::Impl::record(PerFrame& f, const FrameDesc& frame, int swap_image)
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes.layout, 0, 1, &f.set, 0, nullptr);
   record_shadow_pass(cmd, frame);
   record_scene_pass(cmd, f, frame);
-  if (frame.overlay) record_overlay_pass(cmd, frame);
+  if (frame.overlay) record_overlay_pass(cmd);
   if (swap_image >= 0) record_present_blit(cmd, swap_image);
   vkEndCommandBuffer(cmd);
 }
 
-void Renderer::Impl::record_overlay_pass(VkCommandBuffer cmd, const FrameDesc& frame) {
+void Renderer::Impl::record_overlay_pass(VkCommandBuffer cmd) {
   VkRenderPassBeginInfo rp{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
   rp.renderPass = pipes.overlay_pass;
   rp.framebuffer = overlay_fb;
   rp.renderArea = {{0, 0}, extent};
   vkCmdBeginRenderPass(cmd, &rp, VK_SUBPASS_CONTENTS_INLINE);
-  overlay.record(cmd, frame, extent, ctx->device_name);
+  overlay.record(cmd, ui);
   vkCmdEndRenderPass(cmd);
 }
 
@@ -309,6 +309,7 @@ MeshId Renderer::upload_mesh(const MeshData& mesh) {
 eng::Result<void> Renderer::render(const FrameDesc& frame) { return impl_->render(frame); }
 
 std::string Renderer::device_name() const { return impl_->ctx->device_name; }
+eng::ui::Ui& Renderer::ui() { return impl_->ui; }
 std::string Renderer::driver_info() const { return impl_->ctx->driver_info; }
 int Renderer::validation_errors() const { return impl_->ctx->log->errors; }
 int Renderer::validation_warnings() const { return impl_->ctx->log->warnings; }

@@ -7,6 +7,7 @@
 #include "engine/core/image.h"
 #include "engine/core/result.h"
 #include "engine/render/frame.h"
+#include "engine/ui/ui.h"
 
 namespace eng::platform {
 class Window;
@@ -36,6 +37,10 @@ class Renderer {
   eng::Result<void> render(const FrameDesc& frame);
   // The last rendered frame as RGBA8 (sRGB-encoded, alpha 255), top row first. Works in both modes.
   eng::Result<eng::Image> read_back();
+
+  // The UI drawn over the frame when FrameDesc::overlay is set: the caller builds it each frame with
+  // eng::ui::ui_begin(r.ui(), input), ImGui:: calls, eng::ui::ui_end(r.ui()); render() draws the last ended frame.
+  eng::ui::Ui& ui();
 
   std::string device_name() const;
   std::string driver_info() const;

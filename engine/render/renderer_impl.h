@@ -49,6 +49,7 @@ struct Renderer::Impl {
 
   VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
   Pipelines pipes;
+  eng::ui::Ui ui;  // the game builds its UI frames here; the overlay pass draws the last one
   Overlay overlay;
   Image shadow_map;
   VkFramebuffer shadow_fb = VK_NULL_HANDLE;
@@ -86,7 +87,7 @@ struct Renderer::Impl {
   void record_shadow_pass(VkCommandBuffer cmd, const FrameDesc& frame);              // shadow_pass.cpp
   void record_scene_pass(VkCommandBuffer cmd, PerFrame& f, const FrameDesc& frame);  // scene_pass.cpp
   void record_debug_draw(VkCommandBuffer cmd, PerFrame& f, const FrameDesc& frame);  // debug_draw.cpp
-  void record_overlay_pass(VkCommandBuffer cmd, const FrameDesc& frame);             // renderer.cpp
+  void record_overlay_pass(VkCommandBuffer cmd);             // renderer.cpp
   void record_present_blit(VkCommandBuffer cmd, int swap_image);                     // present_blit.cpp
   // One instanced draw per run of equal meshes in the mesh-sorted opaque list (shared by shadow + scene).
   void draw_opaque(VkCommandBuffer cmd, const FrameDesc& frame);

@@ -13,6 +13,7 @@
 #include "engine/assets/gltf.h"
 
 using namespace eng::anim;
+using anim_test::boxer_skeleton;
 using anim_test::clips_path;
 using anim_test::content_clips;
 

@@ -9,6 +9,7 @@
 
 #include "anim/anim_test_util.h"
 #include "engine/anim/motion_graph.h"
+#include "game/boxing_motion.h"
 
 using namespace eng::anim;
 using Eigen::Quaterniond;
@@ -19,7 +20,8 @@ namespace {
 const MotionGraph& graph() {
   static const MotionGraph g = [] {
     MotionGraph m;
-    m.build(anim_test::content_clips(), GraphOptions{});
+    const Skeleton sk = anim_test::boxer_skeleton();
+    m.build(anim_test::content_clips(), GraphOptions{}, boxing::boxing_graph_options(sk), sk);
     return m;
   }();
   return g;

@@ -4,7 +4,10 @@
 #include <cstdlib>
 #include <memory>
 #include <string>
+#include <vector>
 #include "engine/render/renderer.h"
+#include "engine/ui/ui.h"
+#include "imgui.h"
 #include "support/vulkan_test_env.h"
 
 namespace render_test {
@@ -49,6 +52,26 @@ inline eng::render::FrameDesc basic_frame() {
   f.camera.eye = {4.0f, -6.0f, 3.0f};
   f.camera.target = {0.0f, 0.0f, 1.0f};
   return f;
+}
+
+// One UI frame into the renderer's Ui: a fixed, translucent text panel at (10, 10) (what the game's stats panel
+// looks like), for the tests that draw the overlay. Fixed size: no first-frame auto-fit, so one frame shows it.
+inline void ui_text_panel(eng::render::Renderer& r, const eng::ui::UiInput& in, const std::vector<std::string>& lines) {
+  eng::ui::ui_begin(r.ui(), in);
+  ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(220, 20.0f + 17.0f * static_cast<float>(lines.size())), ImGuiCond_Always);
+  ImGui::SetNextWindowBgAlpha(0.55f);
+  ImGui::Begin("##panel", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoInputs);
+  for (const std::string& l : lines) ImGui::TextUnformatted(l.c_str());
+  ImGui::End();
+  eng::ui::ui_end(r.ui());
+}
+inline eng::ui::UiInput ui_display(int w, int h) {
+  eng::ui::UiInput in;
+  in.display_width = static_cast<float>(w);
+  in.display_height = static_cast<float>(h);
+  return in;
 }
 
 }  // namespace render_test

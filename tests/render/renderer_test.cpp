@@ -85,7 +85,7 @@ TEST(Renderer, SameFrameSameBytes) {
   f.lines.push_back({{0, 0, 0}, {0, 0, 2}, {1, 1, 0, 1}});
   f.points.push_back({{1, 0, 1}, 8.0f, {1, 0, 1, 1}});
   f.overlay = true;
-  f.overlay_lines = {"determinism"};
+  render_test::ui_text_panel(*r, render_test::ui_display(256, 160), {"determinism"});
   ASSERT_TRUE(r->render(f).ok());
   auto a = r->read_back();
   ASSERT_TRUE(r->render(f).ok());
@@ -99,6 +99,7 @@ TEST(Renderer, SameFrameSameBytes) {
   ASSERT_TRUE(r2);
   r2->upload_mesh(make_box_mesh({0.4f, 0.4f, 0.4f}));
   r2->upload_mesh(make_capsule_mesh(0.25f, 0.5f, 24));
+  render_test::ui_text_panel(*r2, render_test::ui_display(256, 160), {"determinism"});
   ASSERT_TRUE(r2->render(f).ok());
   auto c = r2->read_back();
   ASSERT_TRUE(c.ok());
@@ -159,6 +160,7 @@ TEST(Renderer, WithoutMsaaStillRendersCleanly) {
   f.camera.eye = {0.0f, -5.0f, 1.0f};
   f.opaque.push_back({box, at({0, 0, 1}), Material{{0.8f, 0.05f, 0.05f, 1.0f}}});
   f.overlay = true;
+  render_test::ui_text_panel(r, render_test::ui_display(160, 120), {"msaa 1"});
   ASSERT_TRUE(r.render(f).ok());
   auto img = r.read_back();
   ASSERT_TRUE(img.ok());

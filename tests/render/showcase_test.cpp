@@ -39,8 +39,6 @@ FrameDesc showcase(MeshId box, MeshId capsule, MeshId sphere) {
   f.lines.push_back({{-0.3f, -0.2f, 1.15f}, {0.9f, 0.3f, 1.15f}, {1.0f, 0.9f, 0.1f, 1.0f}});
   f.points.push_back({{0.3f, 0.05f, 1.15f}, 10.0f, {1.0f, 0.2f, 0.9f, 1.0f}});
   f.overlay = true;
-  f.frame_ms = 16.6f;
-  f.overlay_lines = {"showcase scene", "F12: screenshot"};
   return f;
 }
 
@@ -52,6 +50,7 @@ TEST(Renderer, ShowcaseScenePng) {
   const MeshId capsule = r->upload_mesh(make_capsule_mesh(0.22f, 0.3f, 32));
   const MeshId sphere = r->upload_mesh(make_sphere_mesh(0.15f, 32));
   const FrameDesc f = showcase(box, capsule, sphere);
+  render_test::ui_text_panel(*r, render_test::ui_display(1280, 720), {"16.60 ms  (60 fps)", "showcase scene", "F12: screenshot"});
   ASSERT_TRUE(r->render(f).ok());
   auto img = r->read_back();
   ASSERT_TRUE(img.ok()) << img.error();

@@ -33,7 +33,8 @@ TEST(RendererWindowed, ResizeMinimiseRestoreWithoutValidationErrors) {
     if (i == 20) w.set_size(800, 500);
     if (i == 35) w.iconify();
     if (i == 45) w.restore();
-    f.frame_ms = static_cast<float>(i);
+    // the window's input through the UI, as the game does it (the panel takes none; xvfb has no pointer moves)
+    render_test::ui_text_panel(r, w.ui_input(1.0f / 60.0f), {"frame " + std::to_string(i)});
     auto res = r.render(f);
     ASSERT_TRUE(res.ok()) << "frame " << i << ": " << res.error();
   }

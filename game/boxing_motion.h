@@ -1,0 +1,21 @@
+#pragma once
+// What the boxing clips mean to the engine's motion graph (engine/anim/motion_graph.h knows no character):
+//  * feature points beyond the 16 joints: the glove centres, the toes and the top of the head, so the window
+//    distance sees where the fists and feet are, not only the wrists and ankles (21 points);
+//  * fall, down, getup and reaction clips are entered only by force (a hit or a knockdown, force_clip) or a
+//    natural continuation: a boxer must not flinch or fall without being hit; fall and down clips are never
+//    left by a random transition (only by their continuations: down -> getup -> guard);
+//  * fall and reaction clips get the knockdown edges from guard, so pruning keeps them reachable;
+//  * guard is the home clip: walks start there and a non-looping clip without extras.next returns to it.
+#include "engine/anim/motion_graph.h"
+#include "engine/anim/skeleton.h"
+
+namespace boxing {
+
+// The home clip of every boxing walk.
+inline constexpr const char* kGuardClip = "guard";
+
+// The boxing graph options for this skeleton (feature points on bones it lacks are left out).
+eng::anim::MotionGraphOptions boxing_graph_options(const eng::anim::Skeleton& skeleton);
+
+}  // namespace boxing
