@@ -17,6 +17,28 @@ struct Contact {
   Vec3 force = Vec3::Zero();  // world force on b from the last solve (a gets -force), N
   double normal_impulse = 0.0;  // N s, last solve
   Vec3 friction_impulse = Vec3::Zero();  // world tangential impulse on b (warm start), N s
+  // relative normal speed of the two bodies at the point at the START of the step (before this step's
+  // forces and the solve), m/s, > 0 approaching: -n . (v_b(p) - v_a(p)). Set by prepare_constraints.
+  double approach_speed = 0.0;
+};
+
+// "Touching" (for contact events): the contact overlaps (depth >= kTouchDepth) or the solver pushed
+// (normal impulse > 0; a speculative contact the bodies would have closed this step). A contact with a
+// gap and no impulse is only speculative: not touching.
+inline constexpr double kTouchDepth = 0.0;  // m
+inline bool is_touching(const Contact& c) { return c.point.depth >= kTouchDepth || c.normal_impulse > 0.0; }
+
+// Contact events are per GEOM PAIR (a body with several geoms can touch one object with several pairs);
+// geom_a < geom_b as in Contact, normal from a to b. Box2D v3's begin / end touch and hit events as
+// arrays filled by the solver (store_impulses), no callbacks.
+struct ContactEvent {
+  int geom_a = 0, geom_b = 0, body_a = 0, body_b = 0;
+};
+struct HitEvent {
+  int geom_a = 0, geom_b = 0, body_a = 0, body_b = 0;
+  Vec3 point = Vec3::Zero(), normal = Vec3::Zero();  // of the pair's touching point approaching fastest
+  double approach_speed = 0.0;  // m/s, that point's Contact::approach_speed (> 0 approaching)
+  double impulse = 0.0;         // N s, sum of the normal impulses over the pair's touching points
 };
 
 // A constraint row of the velocity-level solver (contact normal / friction, joint limit).
@@ -62,6 +84,14 @@ struct Data {
   // contacts of the current step (and the previous one, for warm start)
   std::vector<Contact> contacts, prev_contacts;
   int warm_cursor = 0;  // add_contact: where the warm-start search in prev_contacts resumes
+
+  // contact events of the last step (cleared by step1, filled by store_impulses; capacity
+  // solver.max_contacts each, preallocated): geom pairs that started / stopped touching (is_touching)
+  // this step, and a hit for each begin whose approach speed exceeds Model::hit_event_threshold.
+  std::vector<ContactEvent> contact_begin, contact_end;
+  std::vector<HitEvent> hit_events;
+  // geom pairs touching after this / the last step, sorted by (geom_a, geom_b), with their hit data
+  std::vector<HitEvent> touching, prev_touching;
 
   // ---- workspace (preallocated) ----
   std::vector<Vec6> ws_a, ws_f;         // spatial accelerations / forces per body

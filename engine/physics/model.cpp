@@ -123,6 +123,11 @@ Data make_data(const Model& m) {
   const int maxc = m.solver.max_contacts;
   d.contacts.reserve(maxc);
   d.prev_contacts.reserve(maxc);
+  d.contact_begin.reserve(maxc);
+  d.contact_end.reserve(maxc);
+  d.hit_events.reserve(maxc);
+  d.touching.reserve(maxc);
+  d.prev_touching.reserve(maxc);
   d.ws_a.assign(nb, Vec6::Zero());
   d.ws_f.assign(nb, Vec6::Zero());
   d.ws_Ic.assign(nb, Mat6::Zero());

@@ -371,6 +371,13 @@ void prepare_constraints(const Model& m, Data& d) {
       row.impulse_scale = s.impulse_scale;
     }
   }
+  // approach speed of each contact before the solve (for hit events): -J_n v at the start of the step
+  for (int r = 0; r < nr; ++r) {
+    const ConstraintRow& row = d.rows[r];
+    if (row.kind != ConstraintRow::Normal) continue;
+    d.contacts[row.contact].approach_speed =
+        -sparse_dot(d.J_idx.data() + row.nz_begin, d.J_val.data() + row.nz_begin, row.nz_count, d.vtmp.data());
+  }
   // Each row only reaches the DoFs of its block(s) [j_begin, j_end) (M is block diagonal over the
   // articulations), so W_r = M^-1 J_r^T is stored packed over that range and every pass below costs
   // O(range), not O(nv): N independent articulations cost N times one.
@@ -554,6 +561,75 @@ void store_impulses(const Model& m, Data& d) {
     c.force = (row.lambda * c.point.normal + c.friction_impulse) / m.dt;
   }
   for (int k = 0; k < nv; ++k) d.qacc[k] = (d.v[k] - d.vtmp[k]) / m.dt;
+  contact_events(m, d);
+}
+
+namespace {
+bool pair_less(const HitEvent& x, const HitEvent& y) {
+  return x.geom_a != y.geom_a ? x.geom_a < y.geom_a : x.geom_b < y.geom_b;
+}
+bool same_pair(const HitEvent& x, const HitEvent& y) { return x.geom_a == y.geom_a && x.geom_b == y.geom_b; }
+// x absorbs y (same pair): impulses add, the faster-approaching point wins
+void merge_touch(HitEvent& x, const HitEvent& y) {
+  x.impulse += y.impulse;
+  if (y.approach_speed > x.approach_speed) {
+    x.approach_speed = y.approach_speed;
+    x.point = y.point;
+    x.normal = y.normal;
+  }
+}
+ContactEvent pair_of(const HitEvent& t) { return {t.geom_a, t.geom_b, t.body_a, t.body_b}; }
+}  // namespace
+
+void contact_events(const Model& m, Data& d) {
+  d.contact_begin.clear();
+  d.contact_end.clear();
+  d.hit_events.clear();
+  std::swap(d.touching, d.prev_touching);  // buffers swap: no allocation
+  d.touching.clear();
+  // touching geom pairs of this step, one entry per pair (collide emits a pair's points consecutively and
+  // pairs in sorted order; other contact sources are sorted and merged below)
+  for (const Contact& c : d.contacts) {
+    if (!is_touching(c)) continue;
+    HitEvent t;
+    t.geom_a = c.point.geom_a;
+    t.geom_b = c.point.geom_b;
+    t.body_a = c.body_a;
+    t.body_b = c.body_b;
+    t.point = c.point.position;
+    t.normal = c.point.normal;
+    t.approach_speed = c.approach_speed;
+    t.impulse = c.normal_impulse;
+    if (!d.touching.empty() && same_pair(d.touching.back(), t))
+      merge_touch(d.touching.back(), t);
+    else
+      d.touching.push_back(t);
+  }
+  if (!std::is_sorted(d.touching.begin(), d.touching.end(), pair_less)) {
+    std::sort(d.touching.begin(), d.touching.end(), pair_less);
+    size_t w = 0;
+    for (size_t i = 1; i < d.touching.size(); ++i) {
+      if (same_pair(d.touching[w], d.touching[i]))
+        merge_touch(d.touching[w], d.touching[i]);
+      else
+        d.touching[++w] = d.touching[i];
+    }
+    if (!d.touching.empty()) d.touching.resize(w + 1);
+  }
+  // sorted merge of this step's and the last step's touching pairs: new ones begin, missing ones end
+  size_t i = 0, j = 0;
+  const size_t ni = d.touching.size(), nj = d.prev_touching.size();
+  while (i < ni || j < nj) {
+    if (j == nj || (i < ni && pair_less(d.touching[i], d.prev_touching[j]))) {
+      const HitEvent& t = d.touching[i++];
+      d.contact_begin.push_back(pair_of(t));
+      if (t.approach_speed > m.hit_event_threshold) d.hit_events.push_back(t);
+    } else if (i == ni || pair_less(d.prev_touching[j], d.touching[i])) {
+      d.contact_end.push_back(pair_of(d.prev_touching[j++]));
+    } else {
+      ++i, ++j;
+    }
+  }
 }
 
 void solve_constraints(const Model& m, Data& d) {
@@ -590,6 +666,9 @@ void integrate(const Model& m, Data& d) {
 }
 
 void step1(const Model& m, Data& d) {
+  d.contact_begin.clear();  // events are per step (filled again by store_impulses)
+  d.contact_end.clear();
+  d.hit_events.clear();
   forward_kinematics(m, d);
   collide(m, d);
   compute_constraints(m, d);

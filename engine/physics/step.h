@@ -81,8 +81,12 @@ void prepare_constraints(const Model& m, Data& d);
 void warm_start(const Model& m, Data& d);
 //   solve: solver.iterations projected Gauss-Seidel sweeps (soft step, Coulomb cone / pyramid)
 void solve_pgs(const Model& m, Data& d);
-//   store impulses: contact normal / friction impulses (next step's warm start) and forces; qacc
+//   store impulses: contact normal / friction impulses (next step's warm start) and forces; qacc;
+//   then contact_events
 void store_impulses(const Model& m, Data& d);
+// d.contact_begin / contact_end / hit_events from d.contacts (after the solve) and the touching pairs
+// of the previous call (d.touching -> d.prev_touching). See data.h (ContactEvent, HitEvent).
+void contact_events(const Model& m, Data& d);
 void integrate(const Model& m, Data& d);            // q += dt * v on the manifold; time += dt
 
 // inputs (persist until clear_applied). apply_force_at_point uses d.com_world (last kinematics).
