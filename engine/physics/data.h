@@ -1,6 +1,8 @@
 #pragma once
 // Simulation state + preallocated workspace. All arrays are sized by make_data(); step() performs
 // no heap allocation once the capacities (contacts, broadphase pairs) have been reached.
+#include <array>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -43,10 +45,11 @@ struct HitEvent {
 
 // A constraint row of the velocity-level solver (contact normal / friction, joint limit).
 struct ConstraintRow {
-  enum Kind : uint8_t { Normal, Friction, Limit } kind = Normal;
-  int contact = -1;   // contact index (Normal / Friction), -1 for limits
+  enum Kind : uint8_t { Normal, Friction, Limit, Spring } kind = Normal;
+  int contact = -1;   // contact index (Normal / Friction), point spring index (Spring), -1 for limits
   int partner = -1;   // Friction: index of the other tangent row of the pair (first row of the pair)
-  double C = 0.0;     // position error: gap (> 0 apart, < 0 violated) of a contact normal / limit row
+  double C = 0.0;     // position error: gap (> 0 apart, < 0 violated) of a contact normal / limit row;
+                      // Spring: (point - target) along the row's axis
   // soft parameters, set from C by solve_constraints' prepare stage (prepare_constraints)
   double bias = 0.0;  // target velocity term (J v + bias -> 0)
   double mass_scale = 1.0, impulse_scale = 0.0;  // Box2D v3 soft step
@@ -61,6 +64,26 @@ struct ConstraintRow {
   int j_begin = 0, j_end = 0;
   size_t w_off = 0;
 };
+
+// A point spring (Box2D v3's mouse joint): pulls the body-fixed point `local_point` (body frame) toward
+// the world point `target` as a soft constraint of frequency `hertz` and damping ratio `damping_ratio`
+// (Box2D v3 soft step on the 3 world-axis rows, with the point's true effective mass (J M^-1 J^T)^+,
+// so the response is the same for any mass and implicit-stable), its impulse capped at max_force * dt.
+// Solved inside step2 with the contacts (a drag that pushes a body into the floor is resisted).
+struct PointSpring {
+  // inputs (user-set; read by step2)
+  int body = 0;
+  Vec3 local_point = Vec3::Zero();  // body frame, m
+  Vec3 target = Vec3::Zero();       // world, m
+  double hertz = 5.0;               // Hz
+  double damping_ratio = 0.7;
+  double max_force = std::numeric_limits<double>::infinity();  // N
+  bool active = false;
+  // outputs of the last step (store_impulses); zero when inactive
+  Vec3 force = Vec3::Zero();    // world force applied at the point over the step, N (= impulse / dt)
+  Vec3 impulse = Vec3::Zero();  // N s (also the next step's warm start)
+};
+inline constexpr int kMaxPointSprings = 8;
 
 struct Data {
   VecX q, v, qacc, tau;  // tau: joint torques, user-set, persistent until changed
@@ -80,6 +103,7 @@ struct Data {
 
   // inputs
   std::vector<Vec3> applied_force, applied_torque;  // world, at the body's com; clear_applied()
+  std::array<PointSpring, kMaxPointSprings> point_springs;  // set `active` to use one (see PointSpring)
 
   // contacts of the current step (and the previous one, for warm start)
   std::vector<Contact> contacts, prev_contacts;
@@ -113,6 +137,8 @@ struct Data {
   // when the bodies share ancestors), M^-1 J^T dense over each row's [j_begin, j_end) (packed; capacity
   // max_rows x nv)
   std::vector<ConstraintRow> rows;
+  // per point spring: K = J M^-1 J^T of its 3 rows and K^+ (pseudo-inverse), set by prepare_constraints
+  std::array<Mat3, kMaxPointSprings> spring_K, spring_Kpinv;
   std::vector<int> row_order;    // scratch: rows grouped by DoF range for the multi-RHS solve
   std::vector<int> J_idx;
   std::vector<double> J_val, MinvJT;

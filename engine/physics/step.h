@@ -71,6 +71,9 @@ void passive_forces(const Model& m, Data& d);       // d.passive = -D v - K (q +
 // step2: d.bias = c with the current applied forces; v_free = v + dt M^-1 (tau + passive - bias); qacc
 void unconstrained_velocity(const Model& m, Data& d);
 void forward_dynamics(const Model& m, Data& d);     // mass_matrix + compute_bias + unconstrained_velocity
+// step2: rows for the active Data::point_springs (3 per spring, appended after compute_constraints'
+// rows; the point and target as they are now, the kinematics of step1). Inactive springs: force = 0.
+void point_spring_constraints(const Model& m, Data& d);
 // step2: the constraint solve, Box2D v3's stages in order: prepare_constraints -> warm_start ->
 // solve_pgs -> store_impulses. v_free -> d.v; contact impulses / forces; qacc.
 void solve_constraints(const Model& m, Data& d);
