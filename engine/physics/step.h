@@ -4,9 +4,13 @@
 //
 //   step1 (position stage; reads q, v):
 //     forward_kinematics -> collide -> compute_constraints -> mass_matrix -> compute_bias
-//   -- control may run here: it reads the step1 outputs below, writes tau / applied forces / spring_ref --
-//   step2 (velocity stage; reads tau, applied forces, spring_ref):
-//     passive_forces -> unconstrained_velocity -> solve_constraints -> integrate
+//   -- control may run here: it reads the step1 outputs below, writes tau / applied forces / spring_ref /
+//      point_springs --
+//   step2 (velocity stage; reads tau, applied forces, spring_ref, point_springs):
+//     passive_forces -> unconstrained_velocity -> point_spring_constraints -> solve_constraints
+//     (prepare_constraints -> warm_start -> solve_pgs -> store_impulses -> contact_events) -> integrate
+// (The game still calls step() after its control: control then sees the LAST step's contacts. Running
+// control between step1 and step2 shows it this step's contacts instead: a behaviour change.)
 //
 // STATE AFTER step1 (q, v, time unchanged): d.x / com_world / v_body / cdof / cdof_dot / cinert for the
 // current q, v; d.contacts of the current q (with warm-start impulses of the last step) and their
@@ -45,6 +49,14 @@
 //    normal update, the tangents corrected by J_t M^-1 J_n^T dlambda_n, one pass updating v.
 //  * Friction: Coulomb, per contact two tangent rows; Cone (default) projects the tangential impulse
 //    onto the disk |lambda_t| <= mu lambda_n, Pyramid clamps each row.
+//  * Point springs (Box2D v3's mouse joint): 3 world-axis rows at the point, one block with the point's
+//    inverse effective mass K = J M^-1 J^T (pseudo-inverse K^+: only directions the point can move),
+//    the same soft step with the spring's hertz / damping ratio, m_eff = K^+, the accumulated impulse
+//    clamped to max_force * dt. With the exact K this is implicit Euler of the spring-damper for any
+//    mass (point_spring_test).
+//  * Contact events (data.h): the touching geom pairs of this step against the last one's (begin / end)
+//    and hit events for fast begins, from the solved contacts; approach speed from the velocities at
+//    the start of the step.
 //  * Quaternions are integrated on the manifold q <- q * exp(w_body dt / 2) and renormalised.
 #include "engine/physics/data.h"
 #include "engine/physics/model.h"
