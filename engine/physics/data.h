@@ -1,6 +1,8 @@
 #pragma once
 // Simulation state + preallocated workspace. All arrays are sized by make_data(); step() performs
 // no heap allocation once the capacities (contacts, broadphase pairs) have been reached.
+#include <array>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -17,14 +19,37 @@ struct Contact {
   Vec3 force = Vec3::Zero();  // world force on b from the last solve (a gets -force), N
   double normal_impulse = 0.0;  // N s, last solve
   Vec3 friction_impulse = Vec3::Zero();  // world tangential impulse on b (warm start), N s
+  // relative normal speed of the two bodies at the point at the START of the step (before this step's
+  // forces and the solve), m/s, > 0 approaching: -n . (v_b(p) - v_a(p)). Set by prepare_constraints.
+  double approach_speed = 0.0;
+};
+
+// "Touching" (for contact events): the contact overlaps (depth >= kTouchDepth) or the solver pushed
+// (normal impulse > 0; a speculative contact the bodies would have closed this step). A contact with a
+// gap and no impulse is only speculative: not touching.
+inline constexpr double kTouchDepth = 0.0;  // m
+inline bool is_touching(const Contact& c) { return c.point.depth >= kTouchDepth || c.normal_impulse > 0.0; }
+
+// Contact events are per GEOM PAIR (a body with several geoms can touch one object with several pairs);
+// geom_a < geom_b as in Contact, normal from a to b. Box2D v3's begin / end touch and hit events as
+// arrays filled by the solver (store_impulses), no callbacks.
+struct ContactEvent {
+  int geom_a = 0, geom_b = 0, body_a = 0, body_b = 0;
+};
+struct HitEvent {
+  int geom_a = 0, geom_b = 0, body_a = 0, body_b = 0;
+  Vec3 point = Vec3::Zero(), normal = Vec3::Zero();  // of the pair's touching point approaching fastest
+  double approach_speed = 0.0;  // m/s, that point's Contact::approach_speed (> 0 approaching)
+  double impulse = 0.0;         // N s, sum of the normal impulses over the pair's touching points
 };
 
 // A constraint row of the velocity-level solver (contact normal / friction, joint limit).
 struct ConstraintRow {
-  enum Kind : uint8_t { Normal, Friction, Limit } kind = Normal;
-  int contact = -1;   // contact index (Normal / Friction), -1 for limits
+  enum Kind : uint8_t { Normal, Friction, Limit, Spring } kind = Normal;
+  int contact = -1;   // contact index (Normal / Friction), point spring index (Spring), -1 for limits
   int partner = -1;   // Friction: index of the other tangent row of the pair (first row of the pair)
-  double C = 0.0;     // position error: gap (> 0 apart, < 0 violated) of a contact normal / limit row
+  double C = 0.0;     // position error: gap (> 0 apart, < 0 violated) of a contact normal / limit row;
+                      // Spring: (point - target) along the row's axis
   // soft parameters, set from C by solve_constraints' prepare stage (prepare_constraints)
   double bias = 0.0;  // target velocity term (J v + bias -> 0)
   double mass_scale = 1.0, impulse_scale = 0.0;  // Box2D v3 soft step
@@ -39,6 +64,26 @@ struct ConstraintRow {
   int j_begin = 0, j_end = 0;
   size_t w_off = 0;
 };
+
+// A point spring (Box2D v3's mouse joint): pulls the body-fixed point `local_point` (body frame) toward
+// the world point `target` as a soft constraint of frequency `hertz` and damping ratio `damping_ratio`
+// (Box2D v3 soft step on the 3 world-axis rows, with the point's true effective mass (J M^-1 J^T)^+,
+// so the response is the same for any mass and implicit-stable), its impulse capped at max_force * dt.
+// Solved inside step2 with the contacts (a drag that pushes a body into the floor is resisted).
+struct PointSpring {
+  // inputs (user-set; read by step2)
+  int body = 0;
+  Vec3 local_point = Vec3::Zero();  // body frame, m
+  Vec3 target = Vec3::Zero();       // world, m
+  double hertz = 5.0;               // Hz
+  double damping_ratio = 0.7;
+  double max_force = std::numeric_limits<double>::infinity();  // N
+  bool active = false;
+  // outputs of the last step (store_impulses); zero when inactive
+  Vec3 force = Vec3::Zero();    // world force applied at the point over the step, N (= impulse / dt)
+  Vec3 impulse = Vec3::Zero();  // N s (also the next step's warm start)
+};
+inline constexpr int kMaxPointSprings = 8;
 
 struct Data {
   VecX q, v, qacc, tau;  // tau: joint torques, user-set, persistent until changed
@@ -58,10 +103,19 @@ struct Data {
 
   // inputs
   std::vector<Vec3> applied_force, applied_torque;  // world, at the body's com; clear_applied()
+  std::array<PointSpring, kMaxPointSprings> point_springs;  // set `active` to use one (see PointSpring)
 
   // contacts of the current step (and the previous one, for warm start)
   std::vector<Contact> contacts, prev_contacts;
   int warm_cursor = 0;  // add_contact: where the warm-start search in prev_contacts resumes
+
+  // contact events of the last step (cleared by step1, filled by store_impulses; capacity
+  // solver.max_contacts each, preallocated): geom pairs that started / stopped touching (is_touching)
+  // this step, and a hit for each begin whose approach speed exceeds Model::hit_event_threshold.
+  std::vector<ContactEvent> contact_begin, contact_end;
+  std::vector<HitEvent> hit_events;
+  // geom pairs touching after this / the last step, sorted by (geom_a, geom_b), with their hit data
+  std::vector<HitEvent> touching, prev_touching;
 
   // ---- workspace (preallocated) ----
   std::vector<Vec6> ws_a, ws_f;         // spatial accelerations / forces per body
@@ -83,6 +137,8 @@ struct Data {
   // when the bodies share ancestors), M^-1 J^T dense over each row's [j_begin, j_end) (packed; capacity
   // max_rows x nv)
   std::vector<ConstraintRow> rows;
+  // per point spring: K = J M^-1 J^T of its 3 rows and K^+ (pseudo-inverse), set by prepare_constraints
+  std::array<Mat3, kMaxPointSprings> spring_K, spring_Kpinv;
   std::vector<int> row_order;    // scratch: rows grouped by DoF range for the multi-RHS solve
   std::vector<int> J_idx;
   std::vector<double> J_val, MinvJT;

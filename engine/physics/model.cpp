@@ -123,6 +123,11 @@ Data make_data(const Model& m) {
   const int maxc = m.solver.max_contacts;
   d.contacts.reserve(maxc);
   d.prev_contacts.reserve(maxc);
+  d.contact_begin.reserve(maxc);
+  d.contact_end.reserve(maxc);
+  d.hit_events.reserve(maxc);
+  d.touching.reserve(maxc);
+  d.prev_touching.reserve(maxc);
   d.ws_a.assign(nb, Vec6::Zero());
   d.ws_f.assign(nb, Vec6::Zero());
   d.ws_Ic.assign(nb, Mat6::Zero());
@@ -146,7 +151,7 @@ Data make_data(const Model& m) {
     if (b.joint == JointType::Hinge && b.limited) limit_rows += 1;
     if (b.joint == JointType::Ball) limit_rows += 2;
   }
-  d.max_rows = 3 * maxc + limit_rows;
+  d.max_rows = 3 * maxc + limit_rows + 3 * kMaxPointSprings;
   d.rows.reserve(d.max_rows);
   d.row_order.assign(d.max_rows, 0);
   d.J_idx.assign(static_cast<size_t>(d.max_rows) * 2 * std::max(m.nv, 1), 0);

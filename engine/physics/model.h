@@ -87,6 +87,8 @@ struct Model {
   Vec3 gravity{0.0, 0.0, -9.81};
   double dt = 1.0 / 240.0;
   SolverOptions solver;
+  // a contact begin (Data::contact_begin) whose approach speed exceeds this also gives a hit event, m/s
+  double hit_event_threshold = 0.05;
   int nq = 0, nv = 0;
   // filled by finalize(): per velocity DoF, its body and its parent DoF in the tree (-1 = none),
   // i.e. Featherstone's lambda(i) expanded to DoFs (RBDA Sec. 6.5, eq. 6.21)

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <bit>
 #include <cstdint>
+
+#include <Eigen/Eigenvalues>
 #include <cmath>
 
 #include "engine/physics/dynamics.h"
@@ -263,6 +265,35 @@ void compute_constraints(const Model& m, Data& d) {
   }
 }
 
+void point_spring_constraints(const Model& m, Data& d) {
+  if (m.nv == 0) return;
+  int nz = 0;  // next free sparse entry: after compute_constraints' rows
+  if (!d.rows.empty()) nz = d.rows.back().nz_begin + d.rows.back().nz_count;
+  for (int s = 0; s < kMaxPointSprings; ++s) {
+    PointSpring& ps = d.point_springs[s];
+    if (!ps.active || ps.body <= 0 || ps.body >= static_cast<int>(m.bodies.size()) || is_static(m, ps.body)) {
+      ps.force.setZero();
+      ps.impulse.setZero();
+      continue;
+    }
+    // the point where the kinematics of step1 put it (start of the step)
+    const Vec3 p = d.x[ps.body].R * ps.local_point + d.x[ps.body].p;
+    const Vec3 err = p - ps.target;
+    for (int k = 0; k < 3; ++k) {
+      ConstraintRow r;
+      r.kind = ConstraintRow::Spring;
+      r.contact = s;
+      r.C = err[k];
+      r.lambda = m.solver.warm_start ? ps.impulse[k] : 0.0;
+      row_range(m, 0, ps.body, r);
+      r.nz_begin = nz;
+      r.nz_count = contact_row(m, d, 0, ps.body, p, Vec3::Unit(k), nz);
+      nz += r.nz_count;
+      d.rows.push_back(r);
+    }
+  }
+}
+
 void passive_forces(const Model& m, Data& d) {
   const double h = m.dt;
   for (size_t i = 1; i < m.bodies.size(); ++i) {
@@ -371,6 +402,13 @@ void prepare_constraints(const Model& m, Data& d) {
       row.impulse_scale = s.impulse_scale;
     }
   }
+  // approach speed of each contact before the solve (for hit events): -J_n v at the start of the step
+  for (int r = 0; r < nr; ++r) {
+    const ConstraintRow& row = d.rows[r];
+    if (row.kind != ConstraintRow::Normal) continue;
+    d.contacts[row.contact].approach_speed =
+        -sparse_dot(d.J_idx.data() + row.nz_begin, d.J_val.data() + row.nz_begin, row.nz_count, d.vtmp.data());
+  }
   // Each row only reaches the DoFs of its block(s) [j_begin, j_end) (M is block diagonal over the
   // articulations), so W_r = M^-1 J_r^T is stored packed over that range and every pass below costs
   // O(range), not O(nv): N independent articulations cost N times one.
@@ -418,6 +456,39 @@ void prepare_constraints(const Model& m, Data& d) {
     }
     g0 = g1;
   }
+  // Point springs (3 consecutive rows, equal sparse pattern and range): soft params from the spring's
+  // own hertz / damping ratio (not clamped: the soft step is stable at any stiffness, and the bias is
+  // not capped: max_force bounds it), K = J M^-1 J^T (3 x 3) and its pseudo-inverse. K is singular when
+  // the body cannot move the point along some direction (a hinged link: only tangentially); K^+ gives
+  // zero effective mass there, so the spring pushes only where the point can move (no impulse lost on
+  // a joint's reaction, none reported as force).
+  for (int r = 0; r < nr; ++r) {
+    if (d.rows[r].kind != ConstraintRow::Spring) continue;
+    const int si = d.rows[r].contact;
+    const PointSpring& ps = d.point_springs[si];
+    const Softness ss = make_soft(ps.hertz, ps.damping_ratio, h);
+    Mat3 K;
+    for (int a = 0; a < 3; ++a) {
+      ConstraintRow& ra = d.rows[r + a];
+      ra.bias = ss.bias_rate * ra.C;
+      ra.mass_scale = ss.mass_scale;
+      ra.impulse_scale = ss.impulse_scale;
+      for (int b = 0; b < 3; ++b) {
+        const ConstraintRow& rb = d.rows[r + b];
+        K(a, b) = sparse_dot_off(d.J_idx.data() + ra.nz_begin, d.J_val.data() + ra.nz_begin, ra.nz_count,
+                                 d.MinvJT.data() + rb.w_off, rb.j_begin);
+      }
+    }
+    K = 0.5 * (K + K.transpose()).eval();
+    const Eigen::SelfAdjointEigenSolver<Mat3> es(K);
+    const Vec3 ev = es.eigenvalues();
+    const double tol = 1e-9 * std::max(ev.cwiseAbs().maxCoeff(), 1e-300);
+    Vec3 inv_ev;
+    for (int k = 0; k < 3; ++k) inv_ev[k] = ev[k] > tol ? 1.0 / ev[k] : 0.0;
+    d.spring_K[si] = K;
+    d.spring_Kpinv[si] = es.eigenvectors() * inv_ev.asDiagonal() * es.eigenvectors().transpose();
+    r += 2;
+  }
   // Friction rows: coupling J_t M^-1 J_n^T with their normal row, so the fused contact block in
   // solve_pgs is exactly Gauss-Seidel order n -> t1 -> t2.
   for (int r = 0; r < nr; ++r) {
@@ -431,12 +502,20 @@ void prepare_constraints(const Model& m, Data& d) {
 }
 
 void warm_start(const Model& m, Data& d) {
-  (void)m;
   const int nr = static_cast<int>(d.rows.size());
   // clamp last step's impulses into the current feasible set, then apply them: v += W lambda
   for (int r = 0; r < nr; ++r) {
     ConstraintRow& row = d.rows[r];
-    if (row.kind != ConstraintRow::Friction) {
+    if (row.kind == ConstraintRow::Spring) {
+      // last impulse projected on the directions the point can move (K^+ K), capped at max_force dt
+      const int si = row.contact;
+      Vec3 l(row.lambda, d.rows[r + 1].lambda, d.rows[r + 2].lambda);
+      l = d.spring_Kpinv[si] * (d.spring_K[si] * l);
+      const double lmax = d.point_springs[si].max_force * m.dt;
+      if (l.squaredNorm() > lmax * lmax) l *= lmax / l.norm();
+      for (int k = 0; k < 3; ++k) d.rows[r + k].lambda = l[k];
+      r += 2;
+    } else if (row.kind != ConstraintRow::Friction) {
       row.lambda = std::max(row.lambda, 0.0);
     } else if (row.partner == r) {
       ConstraintRow& r2 = d.rows[r + 1];
@@ -476,6 +555,30 @@ void solve_pgs(const Model& m, Data& d) {
         const double nl = std::max(row.lambda + dl, 0.0);
         if (nl != row.lambda) axpy_n(nl - row.lambda, W, vb, nb);  // inactive speculative rows: no pass
         row.lambda = nl;
+        continue;
+      }
+      if (row.kind == ConstraintRow::Spring) {
+        // Box2D v3 mouse joint as a 3-row block: lambda += -mass_scale K^+ (J v + bias) - impulse_scale
+        // lambda, then |lambda| <= max_force dt (the accumulated impulse is clamped, as Box2D does)
+        const int si = row.contact;
+        ConstraintRow& r1 = d.rows[r + 1];
+        ConstraintRow& r2 = d.rows[r + 2];
+        const int cnt = row.nz_count;
+        const Vec3 jv(sparse_dot(ji, jx, cnt, v), sparse_dot(ji, d.J_val.data() + r1.nz_begin, cnt, v),
+                      sparse_dot(ji, d.J_val.data() + r2.nz_begin, cnt, v));
+        const Vec3 l0(row.lambda, r1.lambda, r2.lambda);
+        const Vec3 rhs = jv + Vec3(row.bias, r1.bias, r2.bias);
+        Vec3 l = l0 - row.mass_scale * (d.spring_Kpinv[si] * rhs) - row.impulse_scale * l0;
+        const double lmax = d.point_springs[si].max_force * m.dt;
+        if (l.squaredNorm() > lmax * lmax) l *= lmax / l.norm();
+        const Vec3 dl = l - l0;
+        row.lambda = l[0];
+        r1.lambda = l[1];
+        r2.lambda = l[2];
+        const double* W1 = W + nb;
+        const double* W2 = W1 + nb;
+        for (int i = 0; i < nb; ++i) vb[i] += dl[0] * W[i] + dl[1] * W1[i] + dl[2] * W2[i];
+        r += 2;
         continue;
       }
       // Normal row followed by its two friction rows
@@ -545,6 +648,13 @@ void store_impulses(const Model& m, Data& d) {
   // impulses back into the contacts: reported forces, and next step's warm start (add_contact)
   for (int r = 0; r < nr; ++r) {
     const ConstraintRow& row = d.rows[r];
+    if (row.kind == ConstraintRow::Spring) {
+      PointSpring& ps = d.point_springs[row.contact];
+      ps.impulse = Vec3(row.lambda, d.rows[r + 1].lambda, d.rows[r + 2].lambda);
+      ps.force = ps.impulse / m.dt;
+      r += 2;
+      continue;
+    }
     if (row.kind != ConstraintRow::Normal) continue;
     Contact& c = d.contacts[row.contact];
     Vec3 t1, t2;
@@ -554,6 +664,75 @@ void store_impulses(const Model& m, Data& d) {
     c.force = (row.lambda * c.point.normal + c.friction_impulse) / m.dt;
   }
   for (int k = 0; k < nv; ++k) d.qacc[k] = (d.v[k] - d.vtmp[k]) / m.dt;
+  contact_events(m, d);
+}
+
+namespace {
+bool pair_less(const HitEvent& x, const HitEvent& y) {
+  return x.geom_a != y.geom_a ? x.geom_a < y.geom_a : x.geom_b < y.geom_b;
+}
+bool same_pair(const HitEvent& x, const HitEvent& y) { return x.geom_a == y.geom_a && x.geom_b == y.geom_b; }
+// x absorbs y (same pair): impulses add, the faster-approaching point wins
+void merge_touch(HitEvent& x, const HitEvent& y) {
+  x.impulse += y.impulse;
+  if (y.approach_speed > x.approach_speed) {
+    x.approach_speed = y.approach_speed;
+    x.point = y.point;
+    x.normal = y.normal;
+  }
+}
+ContactEvent pair_of(const HitEvent& t) { return {t.geom_a, t.geom_b, t.body_a, t.body_b}; }
+}  // namespace
+
+void contact_events(const Model& m, Data& d) {
+  d.contact_begin.clear();
+  d.contact_end.clear();
+  d.hit_events.clear();
+  std::swap(d.touching, d.prev_touching);  // buffers swap: no allocation
+  d.touching.clear();
+  // touching geom pairs of this step, one entry per pair (collide emits a pair's points consecutively and
+  // pairs in sorted order; other contact sources are sorted and merged below)
+  for (const Contact& c : d.contacts) {
+    if (!is_touching(c)) continue;
+    HitEvent t;
+    t.geom_a = c.point.geom_a;
+    t.geom_b = c.point.geom_b;
+    t.body_a = c.body_a;
+    t.body_b = c.body_b;
+    t.point = c.point.position;
+    t.normal = c.point.normal;
+    t.approach_speed = c.approach_speed;
+    t.impulse = c.normal_impulse;
+    if (!d.touching.empty() && same_pair(d.touching.back(), t))
+      merge_touch(d.touching.back(), t);
+    else
+      d.touching.push_back(t);
+  }
+  if (!std::is_sorted(d.touching.begin(), d.touching.end(), pair_less)) {
+    std::sort(d.touching.begin(), d.touching.end(), pair_less);
+    size_t w = 0;
+    for (size_t i = 1; i < d.touching.size(); ++i) {
+      if (same_pair(d.touching[w], d.touching[i]))
+        merge_touch(d.touching[w], d.touching[i]);
+      else
+        d.touching[++w] = d.touching[i];
+    }
+    if (!d.touching.empty()) d.touching.resize(w + 1);
+  }
+  // sorted merge of this step's and the last step's touching pairs: new ones begin, missing ones end
+  size_t i = 0, j = 0;
+  const size_t ni = d.touching.size(), nj = d.prev_touching.size();
+  while (i < ni || j < nj) {
+    if (j == nj || (i < ni && pair_less(d.touching[i], d.prev_touching[j]))) {
+      const HitEvent& t = d.touching[i++];
+      d.contact_begin.push_back(pair_of(t));
+      if (t.approach_speed > m.hit_event_threshold) d.hit_events.push_back(t);
+    } else if (i == ni || pair_less(d.prev_touching[j], d.touching[i])) {
+      d.contact_end.push_back(pair_of(d.prev_touching[j++]));
+    } else {
+      ++i, ++j;
+    }
+  }
 }
 
 void solve_constraints(const Model& m, Data& d) {
@@ -590,6 +769,9 @@ void integrate(const Model& m, Data& d) {
 }
 
 void step1(const Model& m, Data& d) {
+  d.contact_begin.clear();  // events are per step (filled again by store_impulses)
+  d.contact_end.clear();
+  d.hit_events.clear();
   forward_kinematics(m, d);
   collide(m, d);
   compute_constraints(m, d);
@@ -600,6 +782,7 @@ void step1(const Model& m, Data& d) {
 void step2(const Model& m, Data& d) {
   passive_forces(m, d);
   unconstrained_velocity(m, d);
+  point_spring_constraints(m, d);
   solve_constraints(m, d);
   integrate(m, d);
 }

@@ -4,9 +4,13 @@
 //
 //   step1 (position stage; reads q, v):
 //     forward_kinematics -> collide -> compute_constraints -> mass_matrix -> compute_bias
-//   -- control may run here: it reads the step1 outputs below, writes tau / applied forces / spring_ref --
-//   step2 (velocity stage; reads tau, applied forces, spring_ref):
-//     passive_forces -> unconstrained_velocity -> solve_constraints -> integrate
+//   -- control may run here: it reads the step1 outputs below, writes tau / applied forces / spring_ref /
+//      point_springs --
+//   step2 (velocity stage; reads tau, applied forces, spring_ref, point_springs):
+//     passive_forces -> unconstrained_velocity -> point_spring_constraints -> solve_constraints
+//     (prepare_constraints -> warm_start -> solve_pgs -> store_impulses -> contact_events) -> integrate
+// (The game still calls step() after its control: control then sees the LAST step's contacts. Running
+// control between step1 and step2 shows it this step's contacts instead: a behaviour change.)
 //
 // STATE AFTER step1 (q, v, time unchanged): d.x / com_world / v_body / cdof / cdof_dot / cinert for the
 // current q, v; d.contacts of the current q (with warm-start impulses of the last step) and their
@@ -45,6 +49,14 @@
 //    normal update, the tangents corrected by J_t M^-1 J_n^T dlambda_n, one pass updating v.
 //  * Friction: Coulomb, per contact two tangent rows; Cone (default) projects the tangential impulse
 //    onto the disk |lambda_t| <= mu lambda_n, Pyramid clamps each row.
+//  * Point springs (Box2D v3's mouse joint): 3 world-axis rows at the point, one block with the point's
+//    inverse effective mass K = J M^-1 J^T (pseudo-inverse K^+: only directions the point can move),
+//    the same soft step with the spring's hertz / damping ratio, m_eff = K^+, the accumulated impulse
+//    clamped to max_force * dt. With the exact K this is implicit Euler of the spring-damper for any
+//    mass (point_spring_test).
+//  * Contact events (data.h): the touching geom pairs of this step against the last one's (begin / end)
+//    and hit events for fast begins, from the solved contacts; approach speed from the velocities at
+//    the start of the step.
 //  * Quaternions are integrated on the manifold q <- q * exp(w_body dt / 2) and renormalised.
 #include "engine/physics/data.h"
 #include "engine/physics/model.h"
@@ -71,6 +83,9 @@ void passive_forces(const Model& m, Data& d);       // d.passive = -D v - K (q +
 // step2: d.bias = c with the current applied forces; v_free = v + dt M^-1 (tau + passive - bias); qacc
 void unconstrained_velocity(const Model& m, Data& d);
 void forward_dynamics(const Model& m, Data& d);     // mass_matrix + compute_bias + unconstrained_velocity
+// step2: rows for the active Data::point_springs (3 per spring, appended after compute_constraints'
+// rows; the point and target as they are now, the kinematics of step1). Inactive springs: force = 0.
+void point_spring_constraints(const Model& m, Data& d);
 // step2: the constraint solve, Box2D v3's stages in order: prepare_constraints -> warm_start ->
 // solve_pgs -> store_impulses. v_free -> d.v; contact impulses / forces; qacc.
 void solve_constraints(const Model& m, Data& d);
@@ -81,8 +96,12 @@ void prepare_constraints(const Model& m, Data& d);
 void warm_start(const Model& m, Data& d);
 //   solve: solver.iterations projected Gauss-Seidel sweeps (soft step, Coulomb cone / pyramid)
 void solve_pgs(const Model& m, Data& d);
-//   store impulses: contact normal / friction impulses (next step's warm start) and forces; qacc
+//   store impulses: contact normal / friction impulses (next step's warm start) and forces; qacc;
+//   then contact_events
 void store_impulses(const Model& m, Data& d);
+// d.contact_begin / contact_end / hit_events from d.contacts (after the solve) and the touching pairs
+// of the previous call (d.touching -> d.prev_touching). See data.h (ContactEvent, HitEvent).
+void contact_events(const Model& m, Data& d);
 void integrate(const Model& m, Data& d);            // q += dt * v on the manifold; time += dt
 
 // inputs (persist until clear_applied). apply_force_at_point uses d.com_world (last kinematics).

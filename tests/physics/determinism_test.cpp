@@ -77,6 +77,39 @@ void run(const Model& m, Data& d, int n) {
 }
 }  // namespace
 
+TEST(Determinism, StepWithPointSpringsAndContactEventsDoesNotAllocateOnceWarm) {
+  const Model m = scene();
+  Data d = make_data(m);
+  d.q[2] = 1.0;
+  for (int s = 0; s < 3; ++s) {
+    PointSpring& ps = d.point_springs[2 * s];
+    ps.active = true;
+    ps.body = 1 + 4 * s;
+    ps.local_point = Vec3(0.02, 0, -0.1);
+    ps.target = Vec3(0.1 * s, 0.2, 1.1);
+    ps.hertz = 4.0;
+    ps.max_force = 200.0;
+  }
+  long events = 0;
+  auto run_springs = [&](int n, int i0) {
+    for (int i = i0; i < i0 + n; ++i) {
+      d.point_springs[0].target.x() = 0.3 * std::sin(0.01 * i);
+      d.point_springs[4].active = (i / 50) % 2 == 0;  // switched on and off
+      run(m, d, 1);
+      events += static_cast<long>(d.contact_begin.size() + d.contact_end.size() + d.hit_events.size());
+    }
+  };
+  run_springs(300, 0);
+  events = 0;
+  g_allocs = 0;
+  g_count_allocs = true;
+  run_springs(300, 300);
+  g_count_allocs = false;
+  EXPECT_EQ(g_allocs, 0);
+  EXPECT_GT(events, 0);  // the counted steps did produce contact events
+  EXPECT_GT(d.point_springs[0].force.norm(), 0.0);
+}
+
 TEST(Determinism, TwoIdenticalRunsMatchBitForBit) {
   const Model m = scene();
   Data a = make_data(m), b = make_data(m);
