@@ -3,17 +3,19 @@
 #include <algorithm>
 #include <cmath>
 
-#include "engine/control/orientation_error.h"
-#include "engine/control/person_space.h"
-#include "engine/control/support_polygon.h"
-#include "engine/control/world_pose.h"
+#include "engine/control/servo/orientation_error.h"
+#include "engine/control/servo/person_space.h"
+#include "engine/control/biped/support_polygon.h"
+#include "engine/control/servo/world_pose.h"
+#include "engine/control/biped/foothold.h"
 #include "engine/physics/dynamics.h"
 #include "engine/physics/step.h"
-#include "game/foothold.h"
 
 namespace boxing {
 
+using eng::control::LegBones;
 using eng::control::ServoSpace;
+using eng::control::pose_fk;
 
 namespace {
 // Balance layer gains (boxer_control): desired-root shift per metre of com error (-) and per m/s of com speed (s).
@@ -107,7 +109,7 @@ void place_desired_pose(const eng::assets::CharacterDesc& desc, const Arena& are
   const auto& s = desc.skeleton;
   const LegBones legs[2] = {{s.find("thigh_l"), s.find("shank_l"), s.find("foot_l")},
                             {s.find("thigh_r"), s.find("shank_r"), s.find("foot_r")}};
-  fit_legs_to_ground(s, legs, base - drop, [&](double x, double y) { return arena.top_at(x, y); }, out.pose);
+  fit_legs_to_ground(s, legs, base - drop, ground_of(arena), out.pose);
 }
 
 namespace {
@@ -459,7 +461,7 @@ void plan_steps(const eng::physics::Data& d, const eng::assets::CharacterDesc& d
       st.duration = std::max(td[k].ahead, dt);
       st.landing = P[feet[k]].head<2>() + heading * td[k].travel;
       const double yaw = b.stance.heading + td[k].yaw;
-      st.shift = find_foothold(arena, st.landing, yaw, b.stance.heading).shift;
+      st.shift = find_foothold(ground_of(arena), st.landing, yaw, b.stance.heading).shift;
       const int fb = b.bodies.body[feet[k]];
       const Eigen::Vector3d from = d.x[fb].p + d.x[fb].R * kFootCentre;
       const Eigen::Vector2d to = st.landing + st.shift + Eigen::Rotation2Dd(yaw) * kFootCentre.head<2>();

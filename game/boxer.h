@@ -8,17 +8,17 @@
 
 #include "engine/anim/clip.h"
 #include "engine/assets/character.h"
-#include "engine/control/balance_qp.h"
-#include "engine/control/controller.h"
-#include "engine/control/implicit_servo.h"
-#include "engine/control/inertial_servo.h"
-#include "engine/control/root_spring.h"
+#include "engine/control/balance/balance_qp.h"
+#include "engine/control/servo/controller.h"
+#include "engine/control/servo/implicit_servo.h"
+#include "engine/control/servo/inertial_servo.h"
+#include "engine/control/servo/root_spring.h"
 #include "engine/physics/data.h"
 #include "engine/physics/model.h"
 #include "game/arena.h"
 #include "game/character_builder.h"
 #include "game/pose_source.h"
-#include "game/stance_ik.h"
+#include "engine/control/biped/leg_ik.h"
 
 namespace boxing {
 
@@ -69,7 +69,7 @@ struct Boxer {
   std::vector<eng::control::ImplicitServoJoint> joints;
   std::vector<Eigen::Vector3d> q_joint, spring_ref;
   bool limp = false;  // a ragdoll: no servo at all
-  // Balance QP (--balance qp): joint torques from engine/control/balance_qp.h instead of the implicit springs and
+  // Balance QP (--balance qp): joint torques from engine/control/balance/balance_qp.h instead of the implicit springs and
   // the PD root shift. Inputs rebuilt every tick (capacity kept), workspace and last result kept for reports.
   bool balance_qp = false;
   eng::control::BalanceQpInput qp_in;

@@ -45,7 +45,7 @@ struct Options {
   // Root spring (paper section V: torque-limited, "for some dynamic balance situations"); off by default: the
   // boxers stand with no root help at all.
   std::string root_spring = "auto";    // on | off | auto (on for graph-walk and match)
-  // Balance: "qp" = the balance QP (engine/control/balance_qp.h) turns the desired pose into joint torques;
+  // Balance: "qp" = the balance QP (engine/control/balance/balance_qp.h) turns the desired pose into joint torques;
   // "pd" = eq. 3 as implicit joint springs plus the PD shift of the desired root (boxer.cpp's balance layer).
   std::string balance = "qp";
   double root_spring_max = -1.0;      // N m, its torque limit; < 0: 400 with the QP, 120 with pd

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <filesystem>
 
-#include "engine/control/composite_inertia.h"
-#include "engine/control/implicit_servo.h"
+#include "engine/control/servo/composite_inertia.h"
+#include "engine/control/servo/implicit_servo.h"
 #include "engine/physics/dynamics.h"
 #include "engine/physics/step.h"
 #include "game/rng.h"
