@@ -7,6 +7,7 @@
 #include "engine/control/servo/person_space.h"
 #include "engine/control/biped/support_polygon.h"
 #include "engine/control/servo/world_pose.h"
+#include "engine/control/biped/capture_point.h"
 #include "engine/control/biped/foothold.h"
 #include "engine/physics/dynamics.h"
 #include "engine/physics/step.h"
@@ -41,22 +42,17 @@ constexpr double kBaseTau = 0.3;   // s, see boxer_control (the clip's floor und
 //  * kQpStanceDrop: the desired root this much lower than the clip's, the legs fitted to the crates (knees bent
 //    deeper). On a stance with the lead crate 16 cm higher the rear knee stood at 0.23 rad against the clip's 0.47
 //    (leg nearly straight, heel lifting, no range left to move the com).
-//  * kQpSwingPress: a stepping ankle aimed this much below the clip's, so the sole slides along its crate (a boxer's
+//  * swing_press (StepTuning): a stepping ankle aimed this much below the clip's, so the sole slides along its crate (a boxer's
 //    shuffle) instead of lifting: the body is never on one foot alone. Not when stepping up onto a higher crate.
 // Neither alone helps the walk: drop 0.08 -> 14.8 / 10.7 s, press 0.08 -> 8.4 / 7.3 s, none -> 12.4 / 8.7 s. With
 // press 0.10: drop 0.04 -> 23.6 / 16.2 s, 0.06 -> 27.0 / 22.1 s, 0.10 -> 30.4 / 29.0 s; but the deeper stances cost
 // the stand: 0.06 -> person 39/40, 0.10 -> world 39/40, person 34/40 (falls at 44-60 s: a planted foot's yaw creeps,
 // the rear foot 79 deg off at the fall); 0.04 -> 40/40, 40/40.
 constexpr double kQpStanceDrop = 0.04;  // m
-constexpr double kQpSwingPress = 0.10;  // m
-constexpr double kStepUpTolerance = 0.01;  // m, a landing crate higher than the start's by more is a step up
-const Eigen::Vector3d kFootCentre(0.05, 0.0, 0.0);  // middle of the sole in the foot frame (content: foot box)
-constexpr double kSwingLift = 0.015;  // m, see boxer_control
+// (The press is StepTuning::swing_press, the foot's points Boxer::biped.foot.)
 // A planted ankle standing more than this above its sole's lowest end than the clip's is pressed back down (m).
 // Measured without the deadband: person stand seed 9 fell at 55 s; with 1 cm: 40/40 (with kFaceGain).
 constexpr double kTiptoeDeadband = 0.01;
-// Ends of the sole in the foot frame (content: the foot box, half extents 0.13 x 0.05 x 0.04 at (0.05, 0, -0.04)).
-const Eigen::Vector3d kSoleHeel(-0.08, 0.0, -0.08), kSoleToe(0.18, 0.0, -0.08);
 }  // namespace
 
 ServoSpace servo_space_from_name(const std::string& name) {
@@ -107,8 +103,7 @@ void place_desired_pose(const eng::assets::CharacterDesc& desc, const Arena& are
   out.root_velocity = yaw * out.root_velocity;
   out.angular_velocity[0] = yaw * out.angular_velocity[0];
   const auto& s = desc.skeleton;
-  const LegBones legs[2] = {{s.find("thigh_l"), s.find("shank_l"), s.find("foot_l")},
-                            {s.find("thigh_r"), s.find("shank_r"), s.find("foot_r")}};
+  const LegBones* legs = b.bones.leg;
   fit_legs_to_ground(s, legs, base - drop, ground_of(arena), out.pose);
 }
 
@@ -138,8 +133,8 @@ ComAndSupport com_and_support(const eng::physics::Data& d, const eng::assets::Ch
   for (int k = 0; k < 2; ++k) {
     if (!feet_on[k]) continue;
     const int fb = b.bodies.body[foot_bones[k]];
-    r.centre_a += d.x[fb].p + d.x[fb].R * kFootCentre;
-    r.centre_d += Pd[foot_bones[k]] + Wd[foot_bones[k]] * kFootCentre;
+    r.centre_a += d.x[fb].p + d.x[fb].R * b.biped.foot.centre;
+    r.centre_d += Pd[foot_bones[k]] + Wd[foot_bones[k]] * b.biped.foot.centre;
     ++r.feet;
   }
   if (r.feet > 0) r.centre_a /= r.feet, r.centre_d /= r.feet;
@@ -179,11 +174,6 @@ constexpr double kQpSwingWeight = 1000.0;
 constexpr double kQpMaxSwingSpeed = 3.0;  // m/s, the swing foot's feed-forward velocity bound
 constexpr double kQpMaxComAcc = 6.0;    // m/s^2, the desired com acceleration's bound
 
-// The clip's sole above its floor: the lower of the heel's and toe's heights (clip floor frame, z = 0 is the floor).
-double clip_sole_gap(const std::vector<Eigen::Quaterniond>& W, const std::vector<Eigen::Vector3d>& P, int foot) {
-  return std::min((P[foot] + W[foot] * kSoleHeel).z(), (P[foot] + W[foot] * kSoleToe).z());
-}
-
 void boxer_balance_qp(const eng::physics::Model& m, eng::physics::Data& d, const eng::assets::CharacterDesc& desc,
                       Boxer& b, const bool loaded[2], double dt) {
   namespace ph = eng::physics;
@@ -197,7 +187,7 @@ void boxer_balance_qp(const eng::physics::Model& m, eng::physics::Data& d, const
   in.dof_end = in.dof_begin;
   for (size_t i = 1; i < m.bodies.size(); ++i)
     if (m.bodies[i].root == pelvis) in.dof_end = std::max(in.dof_end, m.bodies[i].v_index + m.bodies[i].nv);
-  const int feet[2] = {skel.find("foot_l"), skel.find("foot_r")};
+  const int* feet = b.bones.foot;
   if (b.metrics.fell) {
     // DOWN: the QP stands a boxer, it does not yet move one lying on the crates (the stand-ups are the match's
     // work). Its torques on a lying body, its links pressed on the ground, made the limbs flail at 30-80 rad/s and
@@ -311,7 +301,7 @@ void boxer_balance_qp(const eng::physics::Model& m, eng::physics::Data& d, const
       const Eigen::Vector3d v = d.v_body[fb].tail<3>() + d.v_body[fb].head<3>().cross(t.point);
       // A planted-but-hovering foot aims kQpLand below where it is (it comes down onto the crate).
       // A swing foot aims at its step's target (plan_steps: the clip's ankle, moved onto a good foothold).
-      const Boxer::StepPlan& step = b.step[k];
+      const eng::control::StepPlan& step = b.step[k];
       const Eigen::Vector3d swing_target = step.active ? step.target : Pd[feet[k]];
       const Eigen::Vector3d target = loaded[k] ? Eigen::Vector3d(t.point - Eigen::Vector3d(0, 0, kQpLand)) : swing_target;
       // The target's velocity as feed-forward (a step's swing moves at 1-2 m/s: PD alone lags ~2 zeta v / wn,
@@ -337,146 +327,73 @@ void boxer_balance_qp(const eng::physics::Model& m, eng::physics::Data& d, const
   b.root_torque = finite ? b.qp_out.root_assist : Eigen::Vector3d::Zero();
 }
 
-constexpr double kStepLookahead = 0.8;  // s, how far ahead a step's touch-down is looked for
-
-// Where and when the walk puts a lifted foot down again: the first frame (looking ahead at 60 Hz within the clip,
-// at most kStepLookahead) whose sole is back within kSwingLift of the floor. travel: landing - now (clip floor frame),
-// yaw: the foot's heading there (clip frame). Uses b.fk_W / b.fk_P as scratch.
-struct Touchdown {
-  double ahead = 0.0;
-  Eigen::Vector2d travel = Eigen::Vector2d::Zero();
-  double yaw = 0.0;
-};
-Touchdown find_touchdown(const eng::anim::Skeleton& skel, Boxer& b, int foot) {
-  std::vector<Eigen::Quaterniond>& W = b.fk_W;
-  std::vector<Eigen::Vector3d>& P = b.fk_P;
-  Touchdown td;
-  pose_fk(skel, b.source.preview(0.0), W, P);
-  const Eigen::Vector2d now_clip = P[foot].head<2>();
-  for (int i = 1; i * (1.0 / 60.0) <= kStepLookahead; ++i) {
-    td.ahead = i / 60.0;
-    pose_fk(skel, b.source.preview(td.ahead), W, P);
-    td.travel = P[foot].head<2>() - now_clip;
-    td.yaw = eng::control::heading_of(W[foot]);
-    if (clip_sole_gap(W, P, foot) <= kSwingLift) break;
-  }
-  return td;
+// Where and when the clip puts foot k down again (step_planner.h), from the pose source's preview.
+eng::control::Touchdown touchdown_of(const eng::anim::Skeleton& skel, Boxer& b, int k) {
+  const auto preview = [&b](double ahead) { return b.source.preview(ahead); };
+  return eng::control::find_touchdown(skel, preview, b.bones.foot[k], b.biped.foot, b.biped.step, b.fk_W, b.fk_P);
 }
 
-// LIFT-OFF GATING (balance QP). A clip's step lifts a foot on its own schedule; the physical body may not have its
-// weight over the other foot yet (the clip shifts it, the physical com lags), and the QP then has one foot's support
-// for a com that is outside it: the boxer falls toward the lifted foot, or the root assist carries it (walk seed 1,
-// 60 s: steps took 86% of the assist). So a foot leaves the ground only when the capture point (com + v_com / omega_0,
-// the linear inverted pendulum's, Pratt et al. 2006) lies inside the other foot's contact hull less kGateMargin; until
-// then it is held planted and the com target moves over the other foot (boxer_balance_qp). A step held longer than
-// kGateMaxHold is skipped (the foot stays down: the clip's foot motion then shows only in the anchor).
-// Measured (walk, 600 s, seeds 1-12, root assist on): the clips' steps lift a foot for 0.13-0.15 s with the capture
-// point 20-30 cm from the stance foot (a boxer's quick step, falling onto the landing foot), so the gate opens for
-// none of them: every step is held down and skipped, and 12 of 12 walks stand the 600 s (without the gate, seeds 1-6:
-// 1 of 6). Opening it also when the capture point is within half the assist's reach of the stance foot (0.29 m)
-// lets 59% of the steps go: 8 of 12 stand (an earlier build), the assist's rms 100 N m against 62.
-// Without the assist (seeds 1-6, 600 s): first falls 114-229 s, mean 167 s (22.8 s on 24 seeds at 60 s before).
-constexpr double kGateMargin = 0.01;   // m
-constexpr double kGateMaxHold = 0.25;  // s
-constexpr double kGateMinSwing = 0.12;  // s: a step opened later than this before the clip's touch-down is skipped
-
+// LIFT-OFF GATING (balance QP, lift_off_gate.h): the capture point over the other foot's touching contacts decides
+// whether a foot the clip lifts may leave the ground. Measurements: docs/decisions/lift-off-gate.md.
 void gate_lift_off(const eng::physics::Model& m, const eng::physics::Data& d, const eng::assets::CharacterDesc& desc,
                    Boxer& b, bool swing[2], double dt) {
   const auto& skel = desc.skeleton;
-  const int feet[2] = {skel.find("foot_l"), skel.find("foot_r")};
   const int pelvis = b.bodies.body[0];
   for (int k = 0; k < 2; ++k) {
-    Boxer::LiftGate& g = b.gate[k];
-    if (!swing[k]) {
-      g = Boxer::LiftGate{};
-      continue;
-    }
-    if (g.lifted || b.metrics.fell) continue;  // a fallen body's clip steps are not gated (it goes limp)
-    if (g.skipped) {
-      swing[k] = false;
-      continue;
-    }
-    // The other foot's contact hull and the capture point.
-    const int other = b.bodies.body[feet[1 - k]];
+    if (!eng::control::lift_off_gate_due(b.gate[k], swing[k], !b.metrics.fell)) continue;
+    // The other foot's contact points and the capture point.
+    const int other = b.bodies.body[b.bones.foot[1 - k]];
     b.qp_pts.clear();
     for (const auto& c : d.contacts) {
       if (c.point.depth < -0.002) continue;
       if ((c.body_a == other && c.body_b == 0) || (c.body_b == other && c.body_a == 0))
         b.qp_pts.push_back(c.point.position.head<2>());
     }
-    bool open = false;
+    Eigen::Vector2d xi = Eigen::Vector2d::Zero();
     if (b.qp_pts.size() >= 2) {
-      eng::control::convex_hull_2d(b.qp_pts, b.qp_hull);
       const Eigen::Vector3d com = eng::physics::subtree_com(m, d, pelvis);
       const eng::physics::Vec6 h = eng::physics::spatial_momentum(m, d, pelvis);
       const Eigen::Vector3d vcom = h.tail<3>() / b.control_body.total_mass;
       const double z = std::max(0.3, com.z() - b.support_base);
-      const Eigen::Vector2d xi = com.head<2>() + vcom.head<2>() / std::sqrt(9.81 / z);
-      open = (eng::control::clamp_to_polygon(b.qp_hull, xi, kGateMargin) - xi).norm() < 1e-9;
+      xi = eng::control::capture_point(com.head<2>(), vcom.head<2>(), z);
     }
-    const double swing_left = find_touchdown(skel, b, feet[k]).ahead;
-    if (open && swing_left >= kGateMinSwing) {
-      g.lifted = true, g.holding = false;
-      ++b.metrics.steps_taken;
-      continue;
-    }
-    g.holding = true;
-    g.held += dt;
-    if (g.held > kGateMaxHold || swing_left < kGateMinSwing) g.skipped = true, g.holding = false, ++b.metrics.steps_skipped;
-    swing[k] = false;
+    const double swing_left = touchdown_of(skel, b, k).ahead;
+    const eng::control::GateEvent e =
+        eng::control::lift_off_gate_decide(b.gate[k], swing[k], b.qp_pts, xi, swing_left, dt, b.biped.gate, b.qp_hull);
+    if (e == eng::control::GateEvent::StepTaken) ++b.metrics.steps_taken;
+    if (e == eng::control::GateEvent::StepSkipped) ++b.metrics.steps_skipped;
   }
 }
 
-
-// STEPS ON THE CRATES (balance QP). When the clip lifts a foot, look ahead in the clip for where it puts it down
-// (the first frame whose sole is back within kSwingLift of the floor), place that landing on the crates the way the
-// current pose is placed (same heading, anchor), and find the smallest shift that lands the sole flat on one crate
-// (foothold.h). During the swing the ankle target is the clip's, plus the shift eased in over the swing (C1 ease,
-// complete at the clip's touch-down), at the clip's lift above the highest of the crates under the foot, under the
-// shifted target and at the landing (the toe clears a higher crate's edge before it gets there).
+// STEPS ON THE CRATES (balance QP, step_planner.h): a foot the clip just lifted starts a step toward a foothold on
+// the crates; every swinging foot's ankle target advances.
 void plan_steps(const eng::physics::Data& d, const eng::assets::CharacterDesc& desc, const Arena& arena, Boxer& b,
                 const bool swing[2], double dt) {
   const auto& skel = desc.skeleton;
-  const int feet[2] = {skel.find("foot_l"), skel.find("foot_r")};
+  const int* feet = b.bones.foot;
   std::vector<Eigen::Quaterniond>& W = b.fk_W;
   std::vector<Eigen::Vector3d>& P = b.fk_P;
   // A foot the clip just lifted: where (clip floor frame) and when the clip puts it down again.
   bool starts[2] = {false, false};
-  Touchdown td[2];
+  eng::control::Touchdown td[2];
   for (int k = 0; k < 2; ++k) {
     if (!swing[k]) b.step[k].active = false;
     if (!swing[k] || b.step[k].active) continue;
     starts[k] = true;
-    td[k] = find_touchdown(skel, b, feet[k]);
+    td[k] = touchdown_of(skel, b, k);
   }
   if (!swing[0] && !swing[1]) return;
   pose_fk(skel, b.desired.pose, W, P);  // the placed pose of this tick
-  const Eigen::Rotation2Dd heading(b.stance.heading);
+  const eng::control::GroundHeight ground = ground_of(arena);
   for (int k = 0; k < 2; ++k) {
     if (!swing[k]) continue;
-    Boxer::StepPlan& st = b.step[k];
+    eng::control::StepPlan& st = b.step[k];
     if (starts[k]) {
-      st.active = true;
-      st.elapsed = 0.0;
-      st.duration = std::max(td[k].ahead, dt);
-      st.landing = P[feet[k]].head<2>() + heading * td[k].travel;
-      const double yaw = b.stance.heading + td[k].yaw;
-      st.shift = find_foothold(ground_of(arena), st.landing, yaw, b.stance.heading).shift;
       const int fb = b.bodies.body[feet[k]];
-      const Eigen::Vector3d from = d.x[fb].p + d.x[fb].R * kFootCentre;
-      const Eigen::Vector2d to = st.landing + st.shift + Eigen::Rotation2Dd(yaw) * kFootCentre.head<2>();
-      st.step_up = arena.top_at(to.x(), to.y()) > arena.top_at(from.x(), from.y()) + kStepUpTolerance;
+      const Eigen::Vector3d from = d.x[fb].p + d.x[fb].R * b.biped.foot.centre;
+      eng::control::start_step(st, td[k], P[feet[k]], b.stance.heading, from, ground, b.biped.foot, b.biped.step, dt);
     }
-    st.elapsed += dt;
-    const double u = std::clamp(st.elapsed / st.duration, 0.0, 1.0);
-    const Eigen::Vector2d s = (3.0 * u * u - 2.0 * u * u * u) * st.shift;
-    const Eigen::Vector3d mid = P[feet[k]] + W[feet[k]] * kFootCentre;
-    st.clip_z = P[feet[k]].z() - arena.top_at(mid.x(), mid.y());  // the fit put the ankle over the crate under mid
-    const Eigen::Vector2d land_mid = st.landing + st.shift + (mid - P[feet[k]]).head<2>();
-    const double top = std::max(arena.top_at(mid.x() + s.x(), mid.y() + s.y()), arena.top_at(land_mid.x(), land_mid.y()));
-    // The shuffle: the sole stays pressed to its crate (below), except up onto a higher crate (it has to clear the edge).
-    const double press = st.step_up ? 0.0 : kQpSwingPress;
-    st.target = Eigen::Vector3d(P[feet[k]].x() + s.x(), P[feet[k]].y() + s.y(), st.clip_z + top - press);
+    eng::control::advance_step(st, P[feet[k]], W[feet[k]], ground, b.biped.foot, b.biped.step, dt);
   }
 }
 }  // namespace
@@ -496,16 +413,16 @@ void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const en
   bool swing[2];          // the clip has this foot in the air (a step)
   double clip_ankle_h[2];  // the clip's ankle above its sole's lowest end (m), for the tiptoe test below
   {
-    // Swing feet: the clip (authored on a flat floor at z = 0) has the sole's lowest end more than kSwingLift above
+    // Swing feet: the clip (authored on a flat floor at z = 0) has the sole's lowest end more than StepTuning::swing_lift above
     // its floor. Judged on the clip itself, not after fitting to the crates, where a leg too short for a low crate
     // leaves a planted foot hanging. A raised heel (the cross's pivot) keeps the toe down: not a swing.
     std::vector<Eigen::Quaterniond>& W0 = b.fk_W;
     std::vector<Eigen::Vector3d>& P0 = b.fk_P;
     pose_fk(desc.skeleton, b.desired.pose, W0, P0);
-    const int feet[2] = {desc.skeleton.find("foot_l"), desc.skeleton.find("foot_r")};
+    const int* feet = b.bones.foot;
     for (int k = 0; k < 2; ++k) {
-      const double gap = clip_sole_gap(W0, P0, feet[k]);
-      swing[k] = gap > kSwingLift;
+      const double gap = eng::control::clip_sole_gap(W0, P0, feet[k], b.biped.foot);
+      swing[k] = gap > b.biped.step.swing_lift;
       clip_ankle_h[k] = P0[feet[k]].z() - gap;
     }
   }
@@ -514,11 +431,10 @@ void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const en
     // (kBaseTau) so a swing foot passing over another crate does not jerk the desired root up or down. The stance's
     // crates only hold until the first step: after one the root was placed for crates the feet had left (a leg
     // over-stretched above a lower crate, or crouched on a higher one).
-    const int feet[2] = {skel.find("foot_l"), skel.find("foot_r")};
     double lowest = 1e9;
-    for (int f : feet) {
+    for (int f : b.bones.foot) {
       const int fb = b.bodies.body[f];
-      const Eigen::Vector3d c = d.x[fb].p + d.x[fb].R * kFootCentre;
+      const Eigen::Vector3d c = d.x[fb].p + d.x[fb].R * b.biped.foot.centre;
       lowest = std::min(lowest, arena.top_at(c.x(), c.y()));
     }
     if (!b.have_support_base) b.support_base = std::min(b.stance.lead_top, b.stance.rear_top), b.have_support_base = true;
@@ -532,9 +448,8 @@ void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const en
   bool loaded[2] = {d.time == 0.0, d.time == 0.0};  // placed on the crates: planted at the start
   if (!b.joints.empty() && !parent_space) {
     // Implicit world-space servo rooted at the feet: aim the leg targets at the ankles where they actually are
-    // (closed-loop consistency, stance_ik.h); the legs then carry the pelvis to the clip's root.
-    const LegBones legs[2] = {{skel.find("thigh_l"), skel.find("shank_l"), skel.find("foot_l")},
-                              {skel.find("thigh_r"), skel.find("shank_r"), skel.find("foot_r")}};
+    // (closed-loop consistency, leg_ik.h); the legs then carry the pelvis to the clip's root.
+    const LegBones* legs = b.bones.leg;
     // A leg is on the support path only while its foot touches something (contacts of the last step); a lifted
     // leg is servoed from the pelvis like an arm and aims at the ground-fitted desired ankle.
     double fn[2] = {0.0, 0.0};  // normal (z) force on each foot from the last solve (N)
@@ -593,7 +508,7 @@ void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const en
         const int fb = b.bodies.body[legs[k].foot];
         const Eigen::Vector3d a = d.x[fb].p;
         double h = -1e9;
-        for (const Eigen::Vector3d& end : {kSoleHeel, kSoleToe}) h = std::max(h, -(d.x[fb].R * end).z());
+        for (const Eigen::Vector3d& end : {b.biped.foot.heel, b.biped.foot.toe}) h = std::max(h, -(d.x[fb].R * end).z());
         ankles[k] = a - Eigen::Vector3d(0.0, 0.0, std::max(0.0, h - clip_ankle_h[k] - kTiptoeDeadband));
       }
       for (int bone : {legs[k].thigh, legs[k].shank, legs[k].foot}) {
@@ -755,7 +670,7 @@ void boxer_measure(const eng::physics::Model& m, const eng::physics::Data& d, co
   mt.ground_contact_time = touching ? mt.ground_contact_time + dt : 0.0;
 
   {  // diagnostic trace
-    const int feet[2] = {skel.find("foot_l"), skel.find("foot_r")};
+    const int* feet = b.bones.foot;
     if (mt.samples == 1)
       for (int k = 0; k < 2; ++k) mt.foot0[k] = d.x[b.bodies.body[feet[k]]].p;
     const long every = std::lround(0.05 / dt);

@@ -18,7 +18,11 @@
 #include "game/arena.h"
 #include "game/character_builder.h"
 #include "game/pose_source.h"
+#include "engine/control/biped/biped_bones.h"
+#include "engine/control/biped/foot_geometry.h"
 #include "engine/control/biped/leg_ik.h"
+#include "engine/control/biped/lift_off_gate.h"
+#include "engine/control/biped/step_planner.h"
 
 namespace boxing {
 
@@ -50,8 +54,17 @@ struct BoxerMetrics {
   bool traced_fall = false;
 };
 
+// The biped layer's settings (typed, with their defaults; read every tick, so a panel can edit them live).
+struct BipedSettings {
+  eng::control::FootGeometry foot;
+  eng::control::StepTuning step;
+  eng::control::LiftOffGateTuning gate;
+};
+
 struct Boxer {
   int index = 0;
+  eng::control::BipedBones bones;  // leg and foot bone indices, resolved once (world.cpp add_boxer)
+  BipedSettings biped;
   Eigen::Vector3f team_color{1, 0, 0};
   Stance stance;
   CharacterBodies bodies;
@@ -81,27 +94,9 @@ struct Boxer {
   int qp_support_set = 0;  // which feet were planted last tick (bit 0 left, bit 1 right)
   bool swing_prev[2] = {false, false};  // balance QP: the foot was swinging last tick (swing feed-forward)
   Eigen::Vector3d swing_target_prev[2] = {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
-  // Balance QP: the step each foot is taking (boxer_control's plan_steps): where the clip will put it down (world
-  // x, y of the ankle), the foothold shift that lands it flat on one crate (foothold.h), the swing's timing, and this
-  // tick's ankle target (world) and its clip-floor height (for the feed-forward).
-  struct StepPlan {
-    bool active = false;
-    Eigen::Vector2d landing = Eigen::Vector2d::Zero(), shift = Eigen::Vector2d::Zero();
-    double duration = 0.0, elapsed = 0.0;
-    Eigen::Vector3d target = Eigen::Vector3d::Zero();
-    double clip_z = 0.0;
-    bool step_up = false;  // the landing crate is higher than the one the foot leaves (no shuffle, it lifts over)
-  };
-  StepPlan step[2];
-  // Balance QP: lift-off gating (gate_lift_off). A foot the clip lifts stays down until the capture point is over
-  // the other foot; meanwhile the com target moves over that foot (the weight shift before a step).
-  struct LiftGate {
-    bool lifted = false;   // the foot left the ground for this step
-    bool holding = false;  // the clip lifts it, it is held down (weight shift under way)
-    bool skipped = false;  // held too long: this step is not taken (the foot stays planted until the clip lands it)
-    double held = 0.0;     // s held so far
-  };
-  LiftGate gate[2];
+  // Balance QP: the step each foot is taking (step_planner.h) and its lift-off gate (lift_off_gate.h).
+  eng::control::StepPlan step[2];
+  eng::control::LiftGate gate[2];
   double support_base = 0.0;  // balance QP: the clip's floor height under the actual feet (low-passed)
   bool have_support_base = false;
   std::vector<Eigen::Vector2d> qp_pts, qp_hull;  // scratch: contact points on the floor, their hull

@@ -147,6 +147,7 @@ void add_boxer(World& w, int index, const Eigen::Vector3f& color, bool limp, con
   b.team_color = color;
   b.stance = stance;
   b.limp = limp;
+  b.bones = eng::control::biped_bones(w.boxer_desc.skeleton);
   const uint32_t group = 2u << index;
   b.bodies = add_character(w.model, w.boxer_desc, "b" + std::to_string(index) + "_", group, 0xffffffffu, false);
   b.space = servo_space_from_name(w.options.servo);
