@@ -197,9 +197,9 @@ void boxer_balance_qp(const eng::physics::Model& m, eng::physics::Data& d, const
     return;
   }
 
-  // Contacts of the planted feet. A foot is held (planted) only while it actually touches: a foot the clip plants
-  // but that hovers a little above its crate is lowered onto it instead (below).
-  bool touching[2] = {false, false};
+  // Contacts of the planted feet. A foot is held (planted) only while it actually touches (FootContacts::on_ground):
+  // a foot the clip plants but that hovers a little above its crate is lowered onto it instead (below).
+  const bool touching[2] = {loaded[0] && b.contacts.on_ground[0], loaded[1] && b.contacts.on_ground[1]};
   for (const auto& c : d.contacts) {
     if (c.point.depth < -kQpTouchGap) continue;  // speculative, not touching
     if (c.body_a != 0 && c.body_b != 0) continue;  // only the crates and floor (static) carry the body
@@ -211,7 +211,6 @@ void boxer_balance_qp(const eng::physics::Model& m, eng::physics::Data& d, const
     // Every other link touching the ground (a knee, a hand) is a contact of the plan too: left out, the plan
     // would assume that link moves freely and push it into the crate.
     if (foot >= 0 && !loaded[foot]) continue;  // a swing foot brushing the crate carries nothing
-    if (foot >= 0) touching[foot] = true;
     eng::control::QpContact qc;
     qc.body = body;
     qc.point = c.point.position;
@@ -341,16 +340,10 @@ void gate_lift_off(const eng::physics::Model& m, const eng::physics::Data& d, co
   const int pelvis = b.bodies.body[0];
   for (int k = 0; k < 2; ++k) {
     if (!eng::control::lift_off_gate_due(b.gate[k], swing[k], !b.metrics.fell)) continue;
-    // The other foot's contact points and the capture point.
-    const int other = b.bodies.body[b.bones.foot[1 - k]];
-    b.qp_pts.clear();
-    for (const auto& c : d.contacts) {
-      if (c.point.depth < -0.002) continue;
-      if ((c.body_a == other && c.body_b == 0) || (c.body_b == other && c.body_a == 0))
-        b.qp_pts.push_back(c.point.position.head<2>());
-    }
+    // The other (stance) foot's ground contacts and the capture point.
+    const std::vector<Eigen::Vector2d>& stance = b.contacts.ground_points[1 - k];
     Eigen::Vector2d xi = Eigen::Vector2d::Zero();
-    if (b.qp_pts.size() >= 2) {
+    if (stance.size() >= 2) {
       const Eigen::Vector3d com = eng::physics::subtree_com(m, d, pelvis);
       const eng::physics::Vec6 h = eng::physics::spatial_momentum(m, d, pelvis);
       const Eigen::Vector3d vcom = h.tail<3>() / b.control_body.total_mass;
@@ -359,7 +352,7 @@ void gate_lift_off(const eng::physics::Model& m, const eng::physics::Data& d, co
     }
     const double swing_left = touchdown_of(skel, b, k).ahead;
     const eng::control::GateEvent e =
-        eng::control::lift_off_gate_decide(b.gate[k], swing[k], b.qp_pts, xi, swing_left, dt, b.biped.gate, b.qp_hull);
+        eng::control::lift_off_gate_decide(b.gate[k], swing[k], stance, xi, swing_left, dt, b.biped.gate, b.qp_hull);
     if (e == eng::control::GateEvent::StepTaken) ++b.metrics.steps_taken;
     if (e == eng::control::GateEvent::StepSkipped) ++b.metrics.steps_skipped;
   }
@@ -452,16 +445,9 @@ void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const en
     const LegBones* legs = b.bones.leg;
     // A leg is on the support path only while its foot touches something (contacts of the last step); a lifted
     // leg is servoed from the pelvis like an arm and aims at the ground-fitted desired ankle.
-    double fn[2] = {0.0, 0.0};  // normal (z) force on each foot from the last solve (N)
-    for (const auto& c : d.contacts) {
-      if (c.point.depth < -0.02) continue;  // speculative and more than 2 cm away (margin against flicker)
-      for (int k = 0; k < 2; ++k) {
-        const int fb = b.bodies.body[legs[k].foot];
-        if (c.body_a == fb || c.body_b == fb) loaded[k] = true;
-        if (c.body_b == fb) fn[k] += c.force.z();
-        if (c.body_a == fb) fn[k] -= c.force.z();
-      }
-    }
+    // (FootContacts::support: within 2 cm, a margin against flicker.)
+    const double* fn = b.contacts.normal_force;  // normal (z) force on each foot from the last solve (N)
+    for (int k = 0; k < 2; ++k) loaded[k] = loaded[k] || b.contacts.support[k];
     // STEPPING AND ANCHORING. A swing foot (the clip lifts it; see the top of boxer_control) takes its leg off the
     // support path and the leg aims at the clip's ankle, so the physical foot steps. The feet the clip keeps
     // planted and that touch the crates anchor the desired motion: the desired root moves by their mean horizontal
@@ -620,6 +606,10 @@ void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const en
   if (help.force.squaredNorm() > 0) eng::physics::apply_force_at_point(m, d, pelvis, help.force, d.x[pelvis].p);
 }
 
+void boxer_sense_contacts(const eng::physics::Data& d, Boxer& b) {
+  eng::control::find_foot_contacts(d.contacts, b.bodies.body, b.bones, b.biped.contact, b.contacts);
+}
+
 void boxer_measure(const eng::physics::Model& m, const eng::physics::Data& d, const eng::assets::CharacterDesc& desc,
                    Boxer& b, double dt) {
   BoxerMetrics& mt = b.metrics;
@@ -656,17 +646,7 @@ void boxer_measure(const eng::physics::Model& m, const eng::physics::Data& d, co
 
   // Fell: pelvis below half its standing height above the support, or a link other than feet and shanks
   // touching the crates or floor for more than 0.2 s.
-  bool touching = false;
-  for (const auto& c : d.contacts) {
-    if (c.point.depth < -0.005) continue;  // speculative contact, not touching yet
-    const int other = c.body_a == 0 ? c.body_b : (c.body_b == 0 ? c.body_a : -1);
-    if (other < 0) continue;
-    for (int i = 0; i < n; ++i) {
-      if (b.bodies.body[i] != other) continue;
-      const std::string& nm = skel.name[i];
-      if (nm.rfind("foot", 0) != 0 && nm.rfind("shank", 0) != 0) touching = true;
-    }
-  }
+  const bool touching = b.contacts.other_link_on_ground;  // (FootContacts: within 5 mm)
   mt.ground_contact_time = touching ? mt.ground_contact_time + dt : 0.0;
 
   {  // diagnostic trace

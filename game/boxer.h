@@ -19,6 +19,7 @@
 #include "game/character_builder.h"
 #include "game/pose_source.h"
 #include "engine/control/biped/biped_bones.h"
+#include "engine/control/biped/foot_contacts.h"
 #include "engine/control/biped/foot_geometry.h"
 #include "engine/control/biped/leg_ik.h"
 #include "engine/control/biped/lift_off_gate.h"
@@ -59,12 +60,14 @@ struct BipedSettings {
   eng::control::FootGeometry foot;
   eng::control::StepTuning step;
   eng::control::LiftOffGateTuning gate;
+  eng::control::FootContactThresholds contact;
 };
 
 struct Boxer {
   int index = 0;
   eng::control::BipedBones bones;  // leg and foot bone indices, resolved once (world.cpp add_boxer)
   BipedSettings biped;
+  eng::control::FootContacts contacts;  // of the last physics step (boxer_sense_contacts), read by control and metrics
   Eigen::Vector3f team_color{1, 0, 0};
   Stance stance;
   CharacterBodies bodies;
@@ -131,6 +134,10 @@ void place_desired_pose(const eng::assets::CharacterDesc& desc, const Arena& are
 // (+tau on each bone, -tau on its parent; root help on the pelvis without reaction).
 void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const eng::assets::CharacterDesc& desc,
                    const Arena& arena, Boxer& b, double dt);
+
+// Works out the boxer's foot contacts from the contacts of the last physics step (once per contact set: after every
+// step and once before the first): b.contacts.
+void boxer_sense_contacts(const eng::physics::Data& d, Boxer& b);
 
 // Updates fell / upright time / com speed / tracking error after a physics step.
 void boxer_measure(const eng::physics::Model& m, const eng::physics::Data& d, const eng::assets::CharacterDesc& desc,

@@ -271,6 +271,7 @@ eng::Result<std::unique_ptr<World>> make_world(const Options& o) {
     for (Boxer& b : w->boxers) place_boxer(*w, b);
   }
   eng::physics::forward_kinematics(w->model, w->data);
+  for (Boxer& b : w->boxers) boxer_sense_contacts(w->data, b);
   return w;
 }
 
@@ -296,6 +297,7 @@ void step_world(World& w) {
   }
 
   eng::physics::step(w.model, w.data);
+  for (Boxer& b : w.boxers) boxer_sense_contacts(w.data, b);
   for (Boxer& b : w.boxers) boxer_measure(w.model, w.data, w.boxer_desc, b, kPhysicsDt);
   ++w.steps;
   w.physics_ms_total += std::chrono::duration<double, std::milli>(clock::now() - t0).count();
