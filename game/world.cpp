@@ -110,13 +110,13 @@ void setup_implicit_servo(World& w, Boxer& b) {
   const std::vector<int> feet = {skel.find("foot_l"), skel.find("foot_r")};
   const std::vector<bool> support = eng::control::support_path(skel, feet);
   const bool parent_space =
-      b.space == eng::control::ServoSpace::Parent || b.space == eng::control::ServoSpace::ParentMeathook;
+      b.settings.space == eng::control::ServoSpace::Parent || b.settings.space == eng::control::ServoSpace::ParentMeathook;
   const std::vector<double> I = eng::control::servo_inertias(
       skel, mass, com, inertia, parent_space ? std::vector<bool>(n, false) : support, 2);
-  b.joints.assign(n, {});
+  b.ctl.joints.assign(n, {});
   for (int i = 1; i < n; ++i) {
     eng::physics::Body& body = w.model.bodies[b.bodies.body[i]];
-    eng::control::ImplicitServoJoint& j = b.joints[i];
+    eng::control::ImplicitServoJoint& j = b.ctl.joints[i];
     j.kind = body.joint == eng::physics::JointType::Ball    ? eng::control::JointKind::Ball
              : body.joint == eng::physics::JointType::Hinge ? eng::control::JointKind::Hinge
                                                             : eng::control::JointKind::None;
@@ -124,21 +124,22 @@ void setup_implicit_servo(World& w, Boxer& b) {
     j.axis = body.axis;
     // Parent spaces: every joint referenced to its desired parent (planted mode = joint-space PD), gains from
     // the subtree rule as before.
-    const bool parent_space = b.space == eng::control::ServoSpace::Parent ||
-                              b.space == eng::control::ServoSpace::ParentMeathook;
+    const bool parent_space = b.settings.space == eng::control::ServoSpace::Parent ||
+                              b.settings.space == eng::control::ServoSpace::ParentMeathook;
     j.support = parent_space || support[i];
     j.planted = parent_space || (support[i] && std::find(feet.begin(), feet.end(), i) != feet.end());
     j.free_roll = !parent_space && support[i] && skel.parent[i] == 0;  // support hips (thighs)
     j.twist_scale = parent_space ? 1.0 : kPlantedTwistScale;
-    j.K = eng::control::servo_k1(b.gains, I[i]);
-    j.D = eng::control::servo_k2(b.gains, I[i]);
+    j.K = eng::control::servo_k1(b.settings.gains, I[i]);
+    j.D = eng::control::servo_k2(b.settings.gains, I[i]);
     j.limit = j.planted ? kAnkleTorqueLimit : kServoTorqueLimit;
-    if (b.balance_qp) continue;  // the QP writes joint torques (d.tau); no servo springs in the model
+    // The QP writes joint torques (d.tau): no servo springs in the model.
+    if (!std::visit([](const auto& c) { return model_springs(c); }, b.ctl.balance)) continue;
     body.stiffness = j.K;
     body.damping += j.D;  // on top of the content's passive joint damping
   }
-  b.q_joint.assign(n, Eigen::Vector3d::Zero());
-  b.spring_ref.assign(n, Eigen::Vector3d::Zero());
+  b.scratch.q_joint.assign(n, Eigen::Vector3d::Zero());
+  b.scratch.spring_ref.assign(n, Eigen::Vector3d::Zero());
 }
 
 void add_boxer(World& w, int index, const Eigen::Vector3f& color, bool limp, const Stance& stance) {
@@ -150,26 +151,32 @@ void add_boxer(World& w, int index, const Eigen::Vector3f& color, bool limp, con
   b.bones = eng::control::biped_bones(w.boxer_desc.skeleton);
   const uint32_t group = 2u << index;
   b.bodies = add_character(w.model, w.boxer_desc, "b" + std::to_string(index) + "_", group, 0xffffffffu, false);
-  b.space = servo_space_from_name(w.options.servo);
-  b.balance_qp = !limp && w.options.balance == "qp" && b.space != eng::control::ServoSpace::Parent &&
-                 b.space != eng::control::ServoSpace::ParentMeathook;
-  b.gains.omega_n = w.options.servo_omega_n;
-  b.gains.zeta = w.options.servo_zeta;
-  b.gains.stable_pd = true;
-  b.gains.dt = kPhysicsDt;
+  b.settings.space = servo_space_from_name(w.options.servo);
+  // The balance controller: the QP (--balance qp) for a servo rooted at the feet, else the PD layer.
+  if (!limp && w.options.balance == "qp" && b.settings.space != eng::control::ServoSpace::Parent &&
+      b.settings.space != eng::control::ServoSpace::ParentMeathook)
+    b.ctl.balance = QpBalance{};
+  else
+    b.ctl.balance = PdBalance{};
+  b.settings.gains.omega_n = w.options.servo_omega_n;
+  b.settings.gains.zeta = w.options.servo_zeta;
+  b.settings.gains.stable_pd = true;
+  b.settings.gains.dt = kPhysicsDt;
   b.control_body = control_body_of(w.boxer_desc);
-  b.servo.resize(w.boxer_desc.skeleton.size());
+  b.ctl.servo.resize(w.boxer_desc.skeleton.size());
   if (!limp) setup_implicit_servo(w, b);
   // The root spring: asked for, or (auto) for the paper's boxers, the graph walk and the match.
   const bool boxers = w.options.scenario == "graph-walk" || w.options.scenario == "match";
-  b.root_params.enabled = !limp && (w.options.root_spring == "on" || (w.options.root_spring == "auto" && boxers));
-  b.root_params.max_torque = w.options.root_spring_max >= 0.0 ? w.options.root_spring_max
-                             : b.balance_qp                   ? kRootAssistMax
-                                                              : kRootSpringMax;
+  b.settings.root_params.enabled = !limp && (w.options.root_spring == "on" || (w.options.root_spring == "auto" && boxers));
+  b.settings.root_params.max_torque = w.options.root_spring_max >= 0.0 ? w.options.root_spring_max
+                                      : b.uses_qp()                   ? kRootAssistMax
+                                                                      : kRootSpringMax;
   // Under the balance QP the root spring is the QP's root assist (balance_qp.h): the plan chooses the torque.
-  b.qp_params.w_root_assist = b.root_params.enabled ? kRootAssistPrice : 0.0;
-  b.qp_params.max_root_assist = b.root_params.max_torque;
-  b.qp_params.w_torque = b.root_params.enabled ? kQpTorquePrice : 0.0;
+  if (QpBalance* q = std::get_if<QpBalance>(&b.ctl.balance)) {
+    q->params.w_root_assist = b.settings.root_params.enabled ? kRootAssistPrice : 0.0;
+    q->params.max_root_assist = b.settings.root_params.max_torque;
+    q->params.w_torque = b.settings.root_params.enabled ? kQpTorquePrice : 0.0;
+  }
   if (w.options.scenario == "graph-walk" || w.options.scenario == "match") {
     // The paper's boxers: a seeded random walk of the motion graph (each boxer its own stream).
     b.source = PoseSource::graph_walk(w.graph, w.options.seed * 2654435761ull + uint64_t(index));
@@ -318,7 +325,7 @@ nlohmann::json world_report(const World& w) {
       total_up += m.err_sq_upright[i] / m.samples_upright;
     }
     boxers.push_back({{"index", b.index},
-                      {"servo", b.limp ? "limp" : servo_space_name(b.space)},
+                      {"servo", b.limp ? "limp" : servo_space_name(b.settings.space)},
                       {"fell", m.fell},
                       {"fell_at_s", m.fell_at},
                       {"steps_taken", m.steps_taken},
@@ -328,8 +335,8 @@ nlohmann::json world_report(const World& w) {
                       {"time_upright_s", m.time_upright},
                       {"max_com_speed", m.max_com_speed},
                       {"root_spring",
-                       {{"enabled", b.root_params.enabled},
-                        {"max_torque_nm", b.root_params.max_torque},
+                       {{"enabled", b.settings.root_params.enabled},
+                        {"max_torque_nm", b.settings.root_params.max_torque},
                         {"rms_torque_nm", m.time_upright > 0 ? std::sqrt(m.root_torque_sq_dt / m.time_upright) : 0.0},
                         {"peak_torque_nm", m.root_torque_peak},
                         {"saturated_fraction", m.time_upright > 0 ? m.root_saturated_time / m.time_upright : 0.0}}},
