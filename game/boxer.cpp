@@ -46,27 +46,14 @@ const char* servo_space_name(ServoSpace s) {
 void place_desired_pose(const eng::assets::CharacterDesc& desc, const Arena& arena, const Boxer& b,
                         eng::anim::PoseSample& out) {
   // Place the clip (authored facing +X on a flat floor at z = 0) on the stance: rotate by the heading, lift onto
-  // the lower of the two crates under the feet, plus kRearRise of the step (at most kMaxRise) when the REAR crate
-  // is the higher one; the legs are then fitted to the actual crate heights. Why: at the old base (the lower crate)
-  // every boxer with the rear crate higher (12-17 cm) fell at 1.4-2.2 s, rear heel lifting and the rear sole rolling
-  // onto its outer edge (trace in the report), every lead-higher boxer stood. Measured rise: 0.5 x step -> the
-  // 12 cm steps fall, 0.75 x step -> the 16 cm steps fall (lead leg over-extended); 0.75 x step capped at 9 cm ->
-  // all stand. Lead-higher: any rise makes them fall (0.25 x step: s5 at 5.5 s; 0.5: three of five).
-  // Balance QP: no rise. The clip stands on the lower crate and the rear leg bends up to the higher one. Measured
-  // (stand 30 s seeds 1-12, drills seeds 1-4): rise 0.5 x step -> seed 2's lead foot hangs above its crate and the
-  // boxer tips over before it lands; 0.25 -> 24/24 stand, cross and rear uppercut drills 7/8; 0 -> 24/24, every
-  // punch and defence drill 8/8.
+  // the lower of the two crates under the feet (plus the controller's rise, less its drop), move it clip_forward
+  // along the heading; the legs are then fitted to the actual crate heights. Why: docs/decisions/stance-placement.md.
   const bool steps = plans_steps(b);
   const double rise = std::visit([&b](const auto& c) { return stance_rise(c, b); }, b.ctl.balance);
   // Balance QP: once the feet have moved (a walk's steps), the crates under the actual feet (boxer_control).
   const double base = steps && b.ctl.have_support_base ? b.ctl.support_base
                                                           : std::min(b.stance.lead_top, b.stance.rear_top) + rise;
   const Eigen::Quaterniond yaw(Eigen::AngleAxisd(b.stance.heading, Eigen::Vector3d::UnitZ()));
-  // The guard clip's feet are not centred on the stance point (ankles at +0.17 / -0.24 m): placed as authored the
-  // lead heel hangs ~1 cm over the seam onto the rear foot's crate, and when that crate is the higher one the heel
-  // sits against its side (every seed that fell at HEAD had the rear crate higher). kClipForward moves the clip
-  // along the heading so both soles lie inside their own crates (lead heel ~4 cm clear of the seam).
-  // Balance QP: the stance kQpStanceDrop deeper than the clip's (below).
   const double drop = std::visit([&b](const auto& c) { return stance_drop(c, b); }, b.ctl.balance);
   out.pose.root_position = Eigen::Vector3d(b.stance.position.x(), b.stance.position.y(), base - drop) +
                            yaw * (out.pose.root_position + Eigen::Vector3d(b.settings.tuning.stance.clip_forward, 0.0, 0.0));
@@ -176,7 +163,7 @@ void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const en
   const bool steps = plans_steps(b);
   if (steps && d.time > 0.0) {
     // The clip's floor: the lower of the crate tops under the two feet where they actually are, low-passed
-    // (kBaseTau) so a swing foot passing over another crate does not jerk the desired root up or down. The stance's
+    // (StanceTuning::base_tau) so a swing foot passing over another crate does not jerk the desired root up or down. The stance's
     // crates only hold until the first step: after one the root was placed for crates the feet had left (a leg
     // over-stretched above a lower crate, or crouched on a higher one).
     double lowest = 1e9;
@@ -275,11 +262,8 @@ void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const en
   // Look ahead one servo tick (the paper's delta) for omega_d.
   // Person (egocentric) space leaves the root's heading free: the desired root takes the pelvis's actual heading
   // (the game steers by changing the clip's placement); world space keeps the placed clip's heading.
-  // Person space: the heading is the pelvis's, LOW-PASSED (time constant kPersonHeadingTau): a push's sudden
-  // twist of the pelvis otherwise turns the whole desired pose with it, the planted ankles twist the feet after it
-  // and the feet spin on the crates (no torsional friction; seed 3, 315 deg push: feet yawed 40 deg in 0.6 s).
-  // Slow turns are still followed. (Tried: heading from the planted feet -> every boxer fell at 1.3-2.6 s, the
-  // feet's desired yaw then follows their own yaw.)
+  // Person space: the heading is the pelvis's, LOW-PASSED (a push's twist does not turn the desired pose), and
+  // steered slowly toward facing the opponent: docs/decisions/person-space-heading.md.
   double heading = b.stance.heading;
   if (b.settings.space == eng::control::ServoSpace::Person) {
     const double h = eng::control::heading_of(b.scratch.W_a[0]);

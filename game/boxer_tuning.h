@@ -27,6 +27,22 @@ struct PersonSpaceTuning {
   double face_gain = 0.1;    // 1/s, the heading steered toward facing the opponent (1.0: pushes fall)
 };
 
+// Applied once when the boxer is built (world.cpp): live edits take effect on the next build
+// (docs/decisions/servo-setup.md).
+struct ServoSetupTuning {
+  double planted_twist_scale = 0.6;  // planted ankle's twist spring vs eq. 3's (0.3: slow yaw creep, falls)
+  double servo_torque_limit = 0.0;   // N m per joint, 0 = none (400 tried: no better standing)
+  double ankle_torque_limit = 0.0;   // N m planted ankle, 0 = none (80 tried: no better standing)
+};
+
+// The root spring / QP root assist (docs/decisions/balance-qp-tuning.md, servo-setup.md); set up in world.cpp.
+struct RootTuning {
+  double spring_max = 120.0;   // N m, the PD tilt spring's limit (--balance pd)
+  double assist_max = 400.0;   // N m, the QP's root assist limit (scaled by consciousness every tick)
+  double assist_price = 0.3;   // per (N m)^2, the assist in the QP's cost (below 0.3 the plan leans on it everywhere)
+  double qp_torque_price = 1e-3;  // per (N m)^2, joint torques priced with the assist on (a 38 kN m knee otherwise)
+};
+
 struct BoxerTuning {
   eng::control::FootGeometry foot;
   eng::control::FootContactThresholds contact;
@@ -37,6 +53,8 @@ struct BoxerTuning {
   PdBalanceTuning pd;
   BalanceQpTuning qp;
   FallTuning fall;
+  ServoSetupTuning servo;
+  RootTuning root;
 };
 
 }  // namespace boxing

@@ -27,28 +27,7 @@ std::string content_dir(const Options& o) {
 namespace {
 
 constexpr uint32_t kStaticGroup = 1u;
-// Servo torque limit per joint (N m): roughly human peak hip / knee / ankle strength; 0 = none.
-// Tried 400 (hip / knee) and 80 (ankle): no better in the stand scenario, so off for now (see report).
-constexpr double kServoTorqueLimit = 0.0;
-constexpr double kAnkleTorqueLimit = 0.0;
-// Planted ankle's twist spring relative to eq. 3's (ImplicitServoJoint::twist_scale). Measured, stand 60 s seeds
-// 1-5: 0.3 -> world 9/10, person 7/10 (slow yaw creep, falls at ~56 s); 0.6 -> world 10/10; 0.8 -> no better.
-constexpr double kPlantedTwistScale = 0.6;
-// Root spring limits (N m): the PD tilt spring of --balance pd (stop 6), and the QP's root assist. The assist's
-// price per (N m)^2 (balance_qp.h) and limit, measured on the walk (600 s, seeds 1-6, with lift-off gating; mean
-// first fall / standing the 600 s / assist rms; earlier builds of the change): off 185 s / 0 of 6; price 1, limit
-// 200: 353 s / 1 / 28 N m; price 0.3, limit 400: 531 s / 5 / 50 N m (as committed, seeds 1-12: 12 of 12 stand, rms
-// 18-98 N m; off: 167 s on seeds 1-6). Below 0.3 the plan leans on it everywhere (0.3 without the re-solve at the
-// limit: rms 58 N m, falls where it was clipped).
-constexpr double kRootSpringMax = 120.0;
-constexpr double kRootAssistMax = 400.0;
-constexpr double kRootAssistPrice = 0.3;
-// The balance QP's price on joint torques per (N m)^2 with the root assist on (balance_qp.h: bounds the internal
-// contact forces; without it, assist on, a knee landing on a crate was planned at 38 kN m and the simulation diverged,
-// walk seed 6 at 192 s). 1e-4 / 1e-3 / 1e-2 walk the same (60 s, seeds 1-12: 10 / 9 / 10 standing). Not priced with
-// the assist off (no divergence seen there): priced, the person-space stand seed 11 falls at 58.8 s (1e-4) or 57.6 s
-// (1e-3), a planted foot's slow yaw creep, where unpriced it stands the minute.
-constexpr double kQpTorquePrice = 1e-3;
+// The servo and root-spring setup values: ServoSetupTuning / RootTuning (boxer_tuning.h, docs/decisions/).
 
 void add_static_arena(World& w) {
   Geom floor;
@@ -129,10 +108,10 @@ void setup_implicit_servo(World& w, Boxer& b) {
     j.support = parent_space || support[i];
     j.planted = parent_space || (support[i] && std::find(feet.begin(), feet.end(), i) != feet.end());
     j.free_roll = !parent_space && support[i] && skel.parent[i] == 0;  // support hips (thighs)
-    j.twist_scale = parent_space ? 1.0 : kPlantedTwistScale;
+    j.twist_scale = parent_space ? 1.0 : b.settings.tuning.servo.planted_twist_scale;
     j.K = eng::control::servo_k1(b.settings.gains, I[i]);
     j.D = eng::control::servo_k2(b.settings.gains, I[i]);
-    j.limit = j.planted ? kAnkleTorqueLimit : kServoTorqueLimit;
+    j.limit = j.planted ? b.settings.tuning.servo.ankle_torque_limit : b.settings.tuning.servo.servo_torque_limit;
     // The QP writes joint torques (d.tau): no servo springs in the model.
     if (!std::visit([](const auto& c) { return model_springs(c); }, b.ctl.balance)) continue;
     body.stiffness = j.K;
@@ -169,13 +148,13 @@ void add_boxer(World& w, int index, const Eigen::Vector3f& color, bool limp, con
   const bool boxers = w.options.scenario == "graph-walk" || w.options.scenario == "match";
   b.settings.root_params.enabled = !limp && (w.options.root_spring == "on" || (w.options.root_spring == "auto" && boxers));
   b.settings.root_params.max_torque = w.options.root_spring_max >= 0.0 ? w.options.root_spring_max
-                                      : b.uses_qp()                   ? kRootAssistMax
-                                                                      : kRootSpringMax;
+                                      : b.uses_qp()                   ? b.settings.tuning.root.assist_max
+                                                                      : b.settings.tuning.root.spring_max;
   // Under the balance QP the root spring is the QP's root assist (balance_qp.h): the plan chooses the torque.
   if (QpBalance* q = std::get_if<QpBalance>(&b.ctl.balance)) {
-    q->params.w_root_assist = b.settings.root_params.enabled ? kRootAssistPrice : 0.0;
+    q->params.w_root_assist = b.settings.root_params.enabled ? b.settings.tuning.root.assist_price : 0.0;
     q->params.max_root_assist = b.settings.root_params.max_torque;
-    q->params.w_torque = b.settings.root_params.enabled ? kQpTorquePrice : 0.0;
+    q->params.w_torque = b.settings.root_params.enabled ? b.settings.tuning.root.qp_torque_price : 0.0;
   }
   if (w.options.scenario == "graph-walk" || w.options.scenario == "match") {
     // The paper's boxers: a seeded random walk of the motion graph (each boxer its own stream).

@@ -16,7 +16,7 @@ namespace boxing {
 struct Boxer;
 struct BalanceTick;
 
-// Tuning (read every tick). Measurements: docs/decisions/pd-balance-gains.md, docs/decisions/stance-rise.md.
+// Tuning (read every tick). Measurements: docs/decisions/pd-balance-gains.md, docs/decisions/stance-placement.md.
 struct PdBalanceTuning {
   double kp = 2.0;          // desired-root shift per metre of com error (-): stand 10/10, all pushes at 2.0 / 0.5
   double kd = 0.5;          // desired-root shift per m/s of com speed (s)
