@@ -36,7 +36,6 @@ bool parse_double(const std::string& s, double lo, double hi, double& out) {
   return used == s.size() && std::isfinite(out) && out >= lo && out <= hi;
 }
 
-const std::set<std::string> kScenarios = {"arena", "ragdolls", "stand", "push", "graph-walk", "match"};
 const std::set<std::string> kCameras = {"default", "closeup", "side", "top"};
 const std::set<std::string> kServos = {"world", "person", "parent", "parent-meathook"};
 
@@ -138,7 +137,9 @@ eng::Result<Options> parse_cli(const std::vector<std::string>& args) {
     } else if (flag == "--scenario") {
       auto v = value();
       if (!v) return missing();
-      if (!kScenarios.count(*v)) return bad("unknown scenario '" + *v + "'");
+      const std::optional<Scenario> s = scenario_from_name(*v);
+      if (!s) return bad("unknown scenario '" + *v + "'");
+      o.scenario_id = *s;
       o.scenario = *v;
     } else if (flag == "--clip") {
       auto v = value();

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 #include "engine/core/result.h"
+#include "game/scenario.h"
 
 namespace boxing {
 
@@ -19,7 +20,8 @@ struct Options {
   double seconds = 0.0;                // simulated seconds to run, then exit (0 = until the window closes;
                                        // headless defaults to 2 s)
   uint64_t seed = 1;
-  std::string scenario = "arena";
+  Scenario scenario_id = Scenario::Arena;  // what the game branches on (scenario.h, game/scenarios/)
+  std::string scenario = "arena";       // its name, as given (for display; scenario_name(scenario_id))
   std::string camera = "default";      // default | closeup | side | top
   std::string screenshot;              // PNG of the last frame
   std::string report;                  // JSON report

@@ -10,6 +10,8 @@
 #include "engine/physics/dynamics.h"
 #include "engine/physics/step.h"
 #include "game/rng.h"
+#include "game/scenarios/scenario_hooks.h"
+#include "game/world_build.h"
 
 namespace boxing {
 
@@ -121,6 +123,8 @@ void setup_implicit_servo(World& w, Boxer& b) {
   b.scratch.spring_ref.assign(n, Eigen::Vector3d::Zero());
 }
 
+}  // namespace
+
 void add_boxer(World& w, int index, const Eigen::Vector3f& color, bool limp, const Stance& stance) {
   Boxer b;
   b.index = index;
@@ -145,7 +149,7 @@ void add_boxer(World& w, int index, const Eigen::Vector3f& color, bool limp, con
   b.ctl.servo.resize(w.boxer_desc.skeleton.size());
   if (!limp) setup_implicit_servo(w, b);
   // The root spring: asked for, or (auto) for the paper's boxers, the graph walk and the match.
-  const bool boxers = w.options.scenario == "graph-walk" || w.options.scenario == "match";
+  const bool boxers = scenario_hooks(w.options.scenario_id).walks_graph;
   b.settings.root_params.enabled = !limp && (w.options.root_spring == "on" || (w.options.root_spring == "auto" && boxers));
   b.settings.root_params.max_torque = w.options.root_spring_max >= 0.0 ? w.options.root_spring_max
                                       : b.uses_qp()                   ? b.settings.tuning.root.assist_max
@@ -156,7 +160,7 @@ void add_boxer(World& w, int index, const Eigen::Vector3f& color, bool limp, con
     q->params.max_root_assist = b.settings.root_params.max_torque;
     q->params.w_torque = b.settings.root_params.enabled ? b.settings.tuning.root.qp_torque_price : 0.0;
   }
-  if (w.options.scenario == "graph-walk" || w.options.scenario == "match") {
+  if (scenario_hooks(w.options.scenario_id).walks_graph) {
     // The paper's boxers: a seeded random walk of the motion graph (each boxer its own stream).
     b.source = PoseSource::graph_walk(w.graph, w.options.seed * 2654435761ull + uint64_t(index));
   } else {
@@ -173,8 +177,6 @@ void place_boxer(World& w, Boxer& b) {
   place_desired_pose(w.boxer_desc, w.arena, b, b.desired);
   set_character_pose(w.model, w.data, b.bodies, w.boxer_desc, b.desired.pose.root_position, b.desired.pose.rotation);
 }
-
-}  // namespace
 
 eng::Result<std::unique_ptr<World>> make_world(const Options& o) {
   auto w = std::make_unique<World>();
@@ -199,63 +201,13 @@ eng::Result<std::unique_ptr<World>> make_world(const Options& o) {
   add_static_arena(*w);
 
   Rng rng(o.seed ^ 0xB0C5ull);
-  if (o.scenario == "ragdolls") {
-    // Limp humanoids and loose crates dropped onto the arena from a seeded layout.
-    for (int k = 0; k < 3; ++k) {
-      Stance s;
-      s.position = {rng.uniform(-1.0, 1.0), rng.uniform(-0.6, 0.6)};
-      s.heading = rng.uniform(-M_PI, M_PI);
-      s.lead_top = s.rear_top = 0.9 + 0.5 * k;
-      add_boxer(*w, k, Eigen::Vector3f(0.55f + 0.2f * k, 0.5f, 0.9f - 0.25f * k), true, s);
-    }
-    for (int k = 0; k < 4; ++k) {
-      eng::physics::Body body;
-      body.name = "crate" + std::to_string(k);
-      body.joint = eng::physics::JointType::Free;
-      const double h = rng.uniform(0.12, 0.2);
-      body.mass = 6.0;
-      body.inertia = (body.mass / 3.0 * h * h) * Eigen::Matrix3d::Identity();
-      const int id = w->model.add_body(body);
-      Geom g;
-      g.shape.type = ShapeType::Box;
-      g.shape.half_extents = Eigen::Vector3d(h, h, h);
-      g.body = id;
-      g.group = 1u << 10;
-      w->model.add_geom(g);
-      w->loose.push_back(LooseBody{id, g.shape, Eigen::Vector3f(0.5f, 0.33f, 0.17f)});
-    }
-  } else {
-    if (o.scenario == "graph-walk" || o.scenario == "match")
-      w->graph.build(w->clips, eng::anim::GraphOptions{}, w->boxer_desc.skeleton);
-    add_boxer(*w, 0, Eigen::Vector3f(0.75f, 0.08f, 0.06f), false, w->arena.stances[0]);
-    // graph-walk: one boxer tracking the walk alone (issue: the servo against a 10-minute random walk).
-    if (o.scenario != "graph-walk") add_boxer(*w, 1, Eigen::Vector3f(0.06f, 0.18f, 0.75f), false, w->arena.stances[1]);
-  }
+  const ScenarioHooks& scenario = scenario_hooks(o.scenario_id);
+  if (scenario.walks_graph) w->graph.build(w->clips, eng::anim::GraphOptions{}, w->boxer_desc.skeleton);
+  scenario.setup(*w, rng);
   w->model.finalize();
   w->data = eng::physics::make_data(w->model);
 
-  if (o.scenario == "ragdolls") {
-    for (Boxer& b : w->boxers) {
-      b.desired = b.source.tick(0.0);
-      place_desired_pose(w->boxer_desc, w->arena, b, b.desired);
-      // Tumble: tilt the whole body by a random rotation before dropping it.
-      const Eigen::Quaterniond tilt(Eigen::AngleAxisd(rng.uniform(0.3, 1.4),
-                                                      Eigen::Vector3d(rng.uniform(-1, 1), rng.uniform(-1, 1), 0.2)
-                                                          .normalized()));
-      b.desired.pose.rotation[0] = tilt * b.desired.pose.rotation[0];
-      set_character_pose(w->model, w->data, b.bodies, w->boxer_desc, b.desired.pose.root_position,
-                         b.desired.pose.rotation);
-    }
-    for (size_t k = 0; k < w->loose.size(); ++k) {
-      const auto& body = w->model.bodies[w->loose[k].body];
-      double* q = w->data.q.data() + body.q_index;
-      q[0] = rng.uniform(-1.2, 1.2), q[1] = rng.uniform(-0.8, 0.8), q[2] = 1.5 + 0.4 * k;
-      const Eigen::Quaterniond r(Eigen::AngleAxisd(rng.uniform(0, 3), Eigen::Vector3d(0.3, 0.5, 0.8).normalized()));
-      q[3] = r.w(), q[4] = r.x(), q[5] = r.y(), q[6] = r.z();
-    }
-  } else {
-    for (Boxer& b : w->boxers) place_boxer(*w, b);
-  }
+  scenario.place(*w, rng);
   eng::physics::forward_kinematics(w->model, w->data);
   for (Boxer& b : w->boxers) boxer_sense_contacts(w->data, b);
   return w;
@@ -269,22 +221,15 @@ void step_world(World& w) {
   eng::physics::forward_kinematics(w.model, w.data);
   for (Boxer& b : w.boxers) boxer_control(w.model, w.data, w.boxer_desc, w.arena, b, kPhysicsDt);
 
-  // Push scenario: a horizontal force at boxer 0's chest, direction in its heading frame (0 = where it faces).
-  const Options& o = w.options;
+  // The scenario's forces (the push scenario's chest push).
+  const ScenarioHooks& scenario = scenario_hooks(w.options.scenario_id);
   w.push_active = false;
-  if (o.scenario == "push" && !w.boxers.empty() && o.push_force > 0 && w.data.time >= o.push_at &&
-      w.data.time < o.push_at + o.push_duration) {
-    const Boxer& b = w.boxers[0];
-    const double a = b.stance.heading + o.push_dir_deg * M_PI / 180.0;
-    const Eigen::Vector3d f(o.push_force * std::cos(a), o.push_force * std::sin(a), 0.0);
-    const int chest = b.bodies.body[w.boxer_desc.skeleton.find("chest")];
-    eng::physics::apply_force_at_point(w.model, w.data, chest, f, w.data.com_world[chest]);
-    w.push_active = true;
-  }
+  if (scenario.before_step) scenario.before_step(w);
 
   eng::physics::step(w.model, w.data);
   for (Boxer& b : w.boxers) boxer_sense_contacts(w.data, b);
   for (Boxer& b : w.boxers) boxer_measure(w.model, w.data, w.boxer_desc, b, kPhysicsDt);
+  if (scenario.after_step) scenario.after_step(w);
   ++w.steps;
   w.physics_ms_total += std::chrono::duration<double, std::milli>(clock::now() - t0).count();
 }
@@ -333,19 +278,12 @@ nlohmann::json world_report(const World& w) {
                       {"feet_start", {std::vector<double>(m.foot0[0].data(), m.foot0[0].data() + 3),
                                       std::vector<double>(m.foot0[1].data(), m.foot0[1].data() + 3)}}});
   }
-  nlohmann::json r = {{"scenario", w.options.scenario},
+  nlohmann::json r = {{"scenario", scenario_name(w.options.scenario_id)},
                       {"physics_steps", w.steps},
                       {"physics_dt", kPhysicsDt},
                       {"physics_ms_per_step", w.steps ? w.physics_ms_total / w.steps : 0.0},
                       {"boxers", boxers}};
-  if (w.options.scenario == "push") {
-    const double momentum = w.options.push_force * w.options.push_duration;
-    r["push"] = {{"dir_deg", w.options.push_dir_deg},
-                 {"force_n", w.options.push_force},
-                 {"duration_s", w.options.push_duration},
-                 {"at_s", w.options.push_at},
-                 {"momentum_kg_m_s", momentum}};
-  }
+  if (const auto report = scenario_hooks(w.options.scenario_id).report) report(w, r);
   return r;
 }
 
