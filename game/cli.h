@@ -50,6 +50,7 @@ struct Options {
   // Balance: "qp" = the balance QP (engine/control/balance/balance_qp.h) turns the desired pose into joint torques;
   // "pd" = eq. 3 as implicit joint springs plus the PD shift of the desired root (boxer.cpp's balance layer).
   std::string balance = "qp";
+  double contact_gap = -1.0;          // m, < 0: each foot-contact purpose its own gap (FootContactThresholds)
   double root_spring_max = -1.0;      // N m, its torque limit; < 0: 400 with the QP, 120 with pd
   // graph tool
   std::string graph_report;

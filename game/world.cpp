@@ -132,6 +132,11 @@ void add_boxer(World& w, int index, const Eigen::Vector3f& color, bool limp, con
   b.stance = stance;
   b.limp = limp;
   b.bones = eng::control::biped_bones(w.boxer_desc.skeleton);
+  if (w.options.contact_gap >= 0.0) {  // the unified-threshold experiment (docs/decisions/foot-contact-thresholds.md)
+    eng::control::FootContactThresholds& t = b.settings.tuning.contact;
+    t.support = t.load = t.fallen = w.options.contact_gap;
+    b.settings.tuning.qp.touch_gap = w.options.contact_gap;
+  }
   const uint32_t group = 2u << index;
   b.bodies = add_character(w.model, w.boxer_desc, "b" + std::to_string(index) + "_", group, 0xffffffffu, false);
   b.settings.space = servo_space_from_name(w.options.servo);

@@ -108,3 +108,13 @@ TEST(Cli, EveryScenarioNameParsesToItsEnumAndBack) {
   EXPECT_EQ(parse_cli({})->scenario_id, Scenario::Arena);
   EXPECT_FALSE(boxing::scenario_from_name("Arena").has_value()) << "names are the flag's, case and all";
 }
+
+TEST(Cli, ContactGapIsOffByDefaultAndParsedInMetres) {
+  EXPECT_LT(parse_cli({})->contact_gap, 0.0) << "each foot-contact purpose keeps its own gap by default";
+  auto o = parse_cli({"--contact-gap", "0.002"});
+  ASSERT_TRUE(o.ok());
+  EXPECT_DOUBLE_EQ(o->contact_gap, 0.002);
+  auto bad = parse_cli({"--contact-gap", "0.5"});
+  ASSERT_FALSE(bad.ok());
+  EXPECT_NE(bad.error().find("--contact-gap"), std::string::npos);
+}
