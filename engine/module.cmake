@@ -1,6 +1,7 @@
-# engine_module(NAME DEPS...): a static library from every .cpp in the calling folder.
+# engine_module(NAME DEPS...): a static library from every .cpp in the calling folder and its subfolders
+# (engine/control/servo, .../biped, .../balance).
 function(engine_module name)
-  file(GLOB _src CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/*.cpp)
+  file(GLOB_RECURSE _src CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/*.cpp)
   if(_src)
     add_library(engine_${name} STATIC ${_src})
     target_include_directories(engine_${name} PUBLIC ${PROJECT_SOURCE_DIR})

@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "engine/control/biped/ground.h"
+
 namespace boxing {
 
 struct Crate {
@@ -33,6 +35,11 @@ struct Arena {
 
 // Columns of one or two stacked crates on a grid; the two cells under each boxer's feet differ by at least
 // min_step metres so every boxer stands with one foot higher than the other.
+// The arena as the biped layer's height query (footholds, leg fitting); the arena must outlive it.
+inline eng::control::GroundHeight ground_of(const Arena& a) {
+  return {&a, [](const void* c, double x, double y) { return static_cast<const Arena*>(c)->top_at(x, y); }};
+}
+
 Arena make_arena(uint64_t seed, double min_step = 0.10);
 
 // Stance geometry shared by the arena layout and the boxer placement (orthodox stance, facing +X at heading 0):

@@ -1,24 +1,33 @@
 #pragma once
-#include <array>
 // A boxer: its bodies in the physics model, its pose source (a keyframed clip, later the motion graph), the servo
-// that turns the desired pose into torques, and the measurements the scenarios report.
+// that turns the desired pose into torques, its balance controller, its state (guard, down, ...) and the
+// measurements the scenarios report. Composition: settings (configuration, read every tick), controller state,
+// scratch, metrics (observe only: control never reads them).
 #include <Eigen/Geometry>
+#include <array>
 #include <string>
 #include <vector>
 
 #include "engine/anim/clip.h"
 #include "engine/assets/character.h"
-#include "engine/control/balance_qp.h"
-#include "engine/control/controller.h"
-#include "engine/control/implicit_servo.h"
-#include "engine/control/inertial_servo.h"
-#include "engine/control/root_spring.h"
+#include "engine/control/biped/biped_bones.h"
+#include "engine/control/biped/foot_contacts.h"
+#include "engine/control/biped/foot_geometry.h"
+#include "engine/control/biped/leg_ik.h"
+#include "engine/control/biped/lift_off_gate.h"
+#include "engine/control/biped/step_planner.h"
+#include "engine/control/servo/controller.h"
+#include "engine/control/servo/implicit_servo.h"
+#include "engine/control/servo/inertial_servo.h"
+#include "engine/control/servo/root_spring.h"
 #include "engine/physics/data.h"
 #include "engine/physics/model.h"
 #include "game/arena.h"
+#include "game/balance/balance_controller.h"
+#include "game/boxer_state.h"
+#include "game/boxer_tuning.h"
 #include "game/character_builder.h"
 #include "game/pose_source.h"
-#include "game/stance_ik.h"
 
 namespace boxing {
 
@@ -32,12 +41,10 @@ struct BoxerMetrics {
   double max_com_speed = 0.0;
   // Root spring use (external torque on the pelvis, no reaction): sum of |tau|^2 dt, peak |tau|, time at its limit.
   double root_torque_sq_dt = 0.0, root_torque_peak = 0.0, root_saturated_time = 0.0;
-  double standing_height = 0.0;  // pelvis above its support at the start
   std::vector<double> err_sq_sum;  // per bone, world orientation tracking error^2 (rad^2)
   long samples = 0;
   std::vector<double> err_sq_upright;  // the same, only the samples before the first fall
   long samples_upright = 0;
-  double ground_contact_time = 0.0;  // continuous time a non-foot, non-shank link touches crates / floor
   Eigen::Vector3d last_com = Eigen::Vector3d::Zero();
   bool have_com = false;
   // Diagnostic trace, in the report as boxers[i].trace (first 4 s at 20 Hz, plus the sample at the fall). Columns:
@@ -50,78 +57,65 @@ struct BoxerMetrics {
   bool traced_fall = false;
 };
 
-struct Boxer {
-  int index = 0;
-  Eigen::Vector3f team_color{1, 0, 0};
-  Stance stance;
-  CharacterBodies bodies;
+// Configuration: set at setup (world.cpp), read every tick (a panel may edit it live).
+struct BoxerSettings {
   eng::control::ServoSpace space = eng::control::ServoSpace::World;
   eng::control::ServoGains gains;
-  eng::control::ControlBody control_body;
   eng::control::MeathookParams hook;
-  eng::control::ServoState servo;
   eng::control::RootSpringParams root_params;  // enabled per scenario (world.cpp), off = no root help
+  BoxerTuning tuning;                          // every tuning value of the boxer's control (boxer_tuning.h)
+};
+
+// Controller state carried from tick to tick.
+struct BoxerControlState {
+  eng::control::ServoState servo;
   eng::control::RootSpring root_spring;
   Eigen::Vector3d root_torque = Eigen::Vector3d::Zero();  // applied this tick (for the metrics)
   // World / Person space: eq. 3 as implicit joint springs rooted at the feet (implicit_servo.h). Per skeleton
-  // bone: the joint's servo (gains also written into the Model's Body::stiffness/damping at build time), the
-  // actual joint rotation and the spring reference written to Data::spring_ref every tick.
+  // bone: the joint's servo (gains also written into the Model's Body::stiffness/damping at build time).
   std::vector<eng::control::ImplicitServoJoint> joints;
-  std::vector<Eigen::Vector3d> q_joint, spring_ref;
-  bool limp = false;  // a ragdoll: no servo at all
-  // Balance QP (--balance qp): joint torques from engine/control/balance_qp.h instead of the implicit springs and
-  // the PD root shift. Inputs rebuilt every tick (capacity kept), workspace and last result kept for reports.
-  bool balance_qp = false;
-  eng::control::BalanceQpInput qp_in;
-  eng::control::BalanceQpParams qp_params;
-  eng::control::BalanceQp qp_ws;
-  eng::control::BalanceQpResult qp_out;
-  Eigen::Vector3d com_d_rel_last = Eigen::Vector3d::Zero();  // desired com - desired support centre, last tick
-  bool have_com_d = false;
-  int qp_support_set = 0;  // which feet were planted last tick (bit 0 left, bit 1 right)
-  bool swing_prev[2] = {false, false};  // balance QP: the foot was swinging last tick (swing feed-forward)
-  Eigen::Vector3d swing_target_prev[2] = {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
-  // Balance QP: the step each foot is taking (boxer_control's plan_steps): where the clip will put it down (world
-  // x, y of the ankle), the foothold shift that lands it flat on one crate (foothold.h), the swing's timing, and this
-  // tick's ankle target (world) and its clip-floor height (for the feed-forward).
-  struct StepPlan {
-    bool active = false;
-    Eigen::Vector2d landing = Eigen::Vector2d::Zero(), shift = Eigen::Vector2d::Zero();
-    double duration = 0.0, elapsed = 0.0;
-    Eigen::Vector3d target = Eigen::Vector3d::Zero();
-    double clip_z = 0.0;
-    bool step_up = false;  // the landing crate is higher than the one the foot leaves (no shuffle, it lifts over)
-  };
-  StepPlan step[2];
-  // Balance QP: lift-off gating (gate_lift_off). A foot the clip lifts stays down until the capture point is over
-  // the other foot; meanwhile the com target moves over that foot (the weight shift before a step).
-  struct LiftGate {
-    bool lifted = false;   // the foot left the ground for this step
-    bool holding = false;  // the clip lifts it, it is held down (weight shift under way)
-    bool skipped = false;  // held too long: this step is not taken (the foot stays planted until the clip lands it)
-    double held = 0.0;     // s held so far
-  };
-  LiftGate gate[2];
+  BalanceController balance;  // PD or QP (balance_controller.h), with its own state
+  eng::control::FootContacts contacts;  // of the last physics step (boxer_sense_contacts)
+  // Balance QP: the step each foot is taking (step_planner.h) and its lift-off gate (lift_off_gate.h).
+  eng::control::StepPlan step[2];
+  eng::control::LiftGate gate[2];
   double support_base = 0.0;  // balance QP: the clip's floor height under the actual feet (low-passed)
   bool have_support_base = false;
-  std::vector<Eigen::Vector2d> qp_pts, qp_hull;  // scratch: contact points on the floor, their hull
   double person_heading = 0.0;  // person space: low-passed pelvis heading (boxer_control)
   bool have_person_heading = false;
-  double plant_yaw[2] = {0, 0};
-  bool plant_yaw_set[2] = {false, false};
   // Where the desired motion sits on the crates (boxer_control): the horizontal offset (world, m) that keeps the
   // clip's planted feet on the physical feet, re-measured every tick from the feet that are both planted in the
   // clip and touching the crates. A walk that steps, or feet that slip, move the whole desired body with them.
   Eigen::Vector2d anchor = Eigen::Vector2d::Zero();
-  // Scratch for forward kinematics of desired poses in boxer_control (no per-tick allocation).
-  std::vector<Eigen::Quaterniond> fk_W;
-  std::vector<Eigen::Vector3d> fk_P;
+  BoxerStateMachine state;  // guard / down ... (boxer_state.h): control reads this, never the metrics
+};
 
-  PoseSource source;                      // looping clip or motion-graph walk
-  eng::anim::PoseSample desired;          // world-placed desired pose (after fitting the legs to the crates)
-  std::vector<Eigen::Quaterniond> W_a, W_d_metric;
-  std::vector<Eigen::Vector3d> omega_a;
+// Per-tick scratch (capacity kept, no allocation once sized).
+struct BoxerScratch {
+  std::vector<Eigen::Quaterniond> fk_W, W_d_metric;
+  std::vector<Eigen::Vector3d> fk_P;
+  std::vector<Eigen::Quaterniond> W_a;  // actual world orientation per bone
+  std::vector<Eigen::Vector3d> omega_a;  // actual world angular velocity per bone
+  std::vector<Eigen::Vector3d> q_joint, spring_ref;  // implicit servo: joint rotations, spring references
+  std::vector<Eigen::Vector2d> hull;  // lift-off gate
+};
+
+struct Boxer {
+  int index = 0;
+  Eigen::Vector3f team_color{1, 0, 0};
+  Stance stance;
+  bool limp = false;  // a ragdoll: no servo at all
+  CharacterBodies bodies;
+  eng::control::BipedBones bones;  // leg and foot bone indices, resolved once (world.cpp add_boxer)
+  eng::control::ControlBody control_body;  // per-bone servo inertias, total mass (setup)
+  BoxerSettings settings;
+  BoxerControlState ctl;
+  BoxerScratch scratch;
+  PoseSource source;              // looping clip or motion-graph walk
+  eng::anim::PoseSample desired;  // world-placed desired pose (after fitting the legs to the crates)
   BoxerMetrics metrics;
+
+  bool uses_qp() const { return std::holds_alternative<QpBalance>(ctl.balance); }
 };
 
 eng::control::ServoSpace servo_space_from_name(const std::string& name);
@@ -132,12 +126,17 @@ const char* servo_space_name(eng::control::ServoSpace s);
 void place_desired_pose(const eng::assets::CharacterDesc& desc, const Arena& arena, const Boxer& b,
                         eng::anim::PoseSample& pose);
 
-// Reads the boxer's actual world orientations / angular velocities, runs its servo and applies the torques
-// (+tau on each bone, -tau on its parent; root help on the pelvis without reaction).
+// Reads the boxer's actual world orientations / angular velocities, runs its servo and balance controller and
+// applies the torques (+tau on each bone, -tau on its parent; root help on the pelvis without reaction).
 void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const eng::assets::CharacterDesc& desc,
                    const Arena& arena, Boxer& b, double dt);
 
-// Updates fell / upright time / com speed / tracking error after a physics step.
+// Works out the boxer's foot contacts from the contacts of the last physics step (once per contact set: after every
+// step and once before the first): b.ctl.contacts.
+void boxer_sense_contacts(const eng::physics::Data& d, Boxer& b);
+
+// After a physics step: the metrics (upright time, com speed, tracking error, trace), then the state machine (a
+// fall: Guard -> Down), which the metrics then record.
 void boxer_measure(const eng::physics::Model& m, const eng::physics::Data& d, const eng::assets::CharacterDesc& desc,
                    Boxer& b, double dt);
 

@@ -36,7 +36,6 @@ bool parse_double(const std::string& s, double lo, double hi, double& out) {
   return used == s.size() && std::isfinite(out) && out >= lo && out <= hi;
 }
 
-const std::set<std::string> kScenarios = {"arena", "ragdolls", "stand", "push", "graph-walk", "match"};
 const std::set<std::string> kCameras = {"default", "closeup", "side", "top"};
 const std::set<std::string> kServos = {"world", "person", "parent", "parent-meathook"};
 
@@ -81,6 +80,8 @@ flags:
                          QP plans (the root assist); with pd: a spring on the pelvis tilt. auto (default): on for
                          graph-walk and match (the paper's boxers), off for stand / push (the balance lab)
   --root-spring-max NM   its torque limit in N m (default 400 with qp, 120 with pd)
+  --contact-gap M        one foot-contact gap for every purpose (experiment; default: 2 cm support, 2 mm load,
+                         5 mm fallen, docs/decisions/foot-contact-thresholds.md)
 graph flags:
   --report FILE.json     graph figures
   --dot FILE.dot         the graph for Graphviz
@@ -138,7 +139,9 @@ eng::Result<Options> parse_cli(const std::vector<std::string>& args) {
     } else if (flag == "--scenario") {
       auto v = value();
       if (!v) return missing();
-      if (!kScenarios.count(*v)) return bad("unknown scenario '" + *v + "'");
+      const std::optional<Scenario> s = scenario_from_name(*v);
+      if (!s) return bad("unknown scenario '" + *v + "'");
+      o.scenario_id = *s;
       o.scenario = *v;
     } else if (flag == "--clip") {
       auto v = value();
@@ -215,6 +218,12 @@ eng::Result<Options> parse_cli(const std::vector<std::string>& args) {
       double x;
       if (!parse_double(*v, 0.0, 1e4, x)) return bad("--root-spring-max must be a non-negative number (N m), got '" + *v + "'");
       o.root_spring_max = x;
+    } else if (flag == "--contact-gap") {
+      auto v = value();
+      if (!v) return missing();
+      double x;
+      if (!parse_double(*v, 0.0, 0.1, x)) return bad("--contact-gap must be a gap in metres (0 to 0.1), got '" + *v + "'");
+      o.contact_gap = x;
     } else if (flag == "--overlay" || flag == "--no-overlay") {
       o.overlay = flag == "--overlay";
       o.overlay_given = true;

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 #include "engine/core/result.h"
+#include "game/scenario.h"
 
 namespace boxing {
 
@@ -19,7 +20,8 @@ struct Options {
   double seconds = 0.0;                // simulated seconds to run, then exit (0 = until the window closes;
                                        // headless defaults to 2 s)
   uint64_t seed = 1;
-  std::string scenario = "arena";
+  Scenario scenario_id = Scenario::Arena;  // what the game branches on (scenario.h, game/scenarios/)
+  std::string scenario = "arena";       // its name, as given (for display; scenario_name(scenario_id))
   std::string camera = "default";      // default | closeup | side | top
   std::string screenshot;              // PNG of the last frame
   std::string report;                  // JSON report
@@ -45,9 +47,10 @@ struct Options {
   // Root spring (paper section V: torque-limited, "for some dynamic balance situations"); off by default: the
   // boxers stand with no root help at all.
   std::string root_spring = "auto";    // on | off | auto (on for graph-walk and match)
-  // Balance: "qp" = the balance QP (engine/control/balance_qp.h) turns the desired pose into joint torques;
+  // Balance: "qp" = the balance QP (engine/control/balance/balance_qp.h) turns the desired pose into joint torques;
   // "pd" = eq. 3 as implicit joint springs plus the PD shift of the desired root (boxer.cpp's balance layer).
   std::string balance = "qp";
+  double contact_gap = -1.0;          // m, < 0: each foot-contact purpose its own gap (FootContactThresholds)
   double root_spring_max = -1.0;      // N m, its torque limit; < 0: 400 with the QP, 120 with pd
   // graph tool
   std::string graph_report;

@@ -9,7 +9,7 @@
 #include "engine/core/image.h"
 #include "engine/render/renderer.h"
 #include "game/scene_view.h"
-#include "game/stance_ik.h"
+#include "engine/control/servo/world_pose.h"
 #include "game/world.h"
 
 namespace boxing {
@@ -48,7 +48,7 @@ int run_contact_sheets(const Options& o) {
     for (int k = 0; k < kCols; ++k) {
       const double t = clip.duration() * k / (kCols - 1);
       const eng::anim::Pose pose = eng::anim::sample_clip_pose(clip, t);
-      pose_fk(desc->skeleton, pose, W, P);
+      eng::control::pose_fk(desc->skeleton, pose, W, P);
       eng::render::FrameDesc f;
       for (const BonePart& part : parts) {
         eng::render::Instance in;

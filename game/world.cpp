@@ -5,12 +5,14 @@
 #include <cmath>
 #include <filesystem>
 
-#include "engine/control/composite_inertia.h"
-#include "engine/control/implicit_servo.h"
+#include "engine/control/servo/composite_inertia.h"
+#include "engine/control/servo/implicit_servo.h"
 #include "engine/physics/dynamics.h"
 #include "engine/physics/step.h"
 #include "game/boxing_motion.h"
 #include "game/rng.h"
+#include "game/scenarios/scenario_hooks.h"
+#include "game/world_build.h"
 
 namespace boxing {
 
@@ -28,28 +30,7 @@ std::string content_dir(const Options& o) {
 namespace {
 
 constexpr uint32_t kStaticGroup = 1u;
-// Servo torque limit per joint (N m): roughly human peak hip / knee / ankle strength; 0 = none.
-// Tried 400 (hip / knee) and 80 (ankle): no better in the stand scenario, so off for now (see report).
-constexpr double kServoTorqueLimit = 0.0;
-constexpr double kAnkleTorqueLimit = 0.0;
-// Planted ankle's twist spring relative to eq. 3's (ImplicitServoJoint::twist_scale). Measured, stand 60 s seeds
-// 1-5: 0.3 -> world 9/10, person 7/10 (slow yaw creep, falls at ~56 s); 0.6 -> world 10/10; 0.8 -> no better.
-constexpr double kPlantedTwistScale = 0.6;
-// Root spring limits (N m): the PD tilt spring of --balance pd (stop 6), and the QP's root assist. The assist's
-// price per (N m)^2 (balance_qp.h) and limit, measured on the walk (600 s, seeds 1-6, with lift-off gating; mean
-// first fall / standing the 600 s / assist rms; earlier builds of the change): off 185 s / 0 of 6; price 1, limit
-// 200: 353 s / 1 / 28 N m; price 0.3, limit 400: 531 s / 5 / 50 N m (as committed, seeds 1-12: 12 of 12 stand, rms
-// 18-98 N m; off: 167 s on seeds 1-6). Below 0.3 the plan leans on it everywhere (0.3 without the re-solve at the
-// limit: rms 58 N m, falls where it was clipped).
-constexpr double kRootSpringMax = 120.0;
-constexpr double kRootAssistMax = 400.0;
-constexpr double kRootAssistPrice = 0.3;
-// The balance QP's price on joint torques per (N m)^2 with the root assist on (balance_qp.h: bounds the internal
-// contact forces; without it, assist on, a knee landing on a crate was planned at 38 kN m and the simulation diverged,
-// walk seed 6 at 192 s). 1e-4 / 1e-3 / 1e-2 walk the same (60 s, seeds 1-12: 10 / 9 / 10 standing). Not priced with
-// the assist off (no divergence seen there): priced, the person-space stand seed 11 falls at 58.8 s (1e-4) or 57.6 s
-// (1e-3), a planted foot's slow yaw creep, where unpriced it stands the minute.
-constexpr double kQpTorquePrice = 1e-3;
+// The servo and root-spring setup values: ServoSetupTuning / RootTuning (boxer_tuning.h, docs/decisions/).
 
 void add_static_arena(World& w) {
   Geom floor;
@@ -111,13 +92,13 @@ void setup_implicit_servo(World& w, Boxer& b) {
   const std::vector<int> feet = {skel.find("foot_l"), skel.find("foot_r")};
   const std::vector<bool> support = eng::control::support_path(skel, feet);
   const bool parent_space =
-      b.space == eng::control::ServoSpace::Parent || b.space == eng::control::ServoSpace::ParentMeathook;
+      b.settings.space == eng::control::ServoSpace::Parent || b.settings.space == eng::control::ServoSpace::ParentMeathook;
   const std::vector<double> I = eng::control::servo_inertias(
       skel, mass, com, inertia, parent_space ? std::vector<bool>(n, false) : support, 2);
-  b.joints.assign(n, {});
+  b.ctl.joints.assign(n, {});
   for (int i = 1; i < n; ++i) {
     eng::physics::Body& body = w.model.bodies[b.bodies.body[i]];
-    eng::control::ImplicitServoJoint& j = b.joints[i];
+    eng::control::ImplicitServoJoint& j = b.ctl.joints[i];
     j.kind = body.joint == eng::physics::JointType::Ball    ? eng::control::JointKind::Ball
              : body.joint == eng::physics::JointType::Hinge ? eng::control::JointKind::Hinge
                                                             : eng::control::JointKind::None;
@@ -125,22 +106,25 @@ void setup_implicit_servo(World& w, Boxer& b) {
     j.axis = body.axis;
     // Parent spaces: every joint referenced to its desired parent (planted mode = joint-space PD), gains from
     // the subtree rule as before.
-    const bool parent_space = b.space == eng::control::ServoSpace::Parent ||
-                              b.space == eng::control::ServoSpace::ParentMeathook;
+    const bool parent_space = b.settings.space == eng::control::ServoSpace::Parent ||
+                              b.settings.space == eng::control::ServoSpace::ParentMeathook;
     j.support = parent_space || support[i];
     j.planted = parent_space || (support[i] && std::find(feet.begin(), feet.end(), i) != feet.end());
     j.free_roll = !parent_space && support[i] && skel.parent[i] == 0;  // support hips (thighs)
-    j.twist_scale = parent_space ? 1.0 : kPlantedTwistScale;
-    j.K = eng::control::servo_k1(b.gains, I[i]);
-    j.D = eng::control::servo_k2(b.gains, I[i]);
-    j.limit = j.planted ? kAnkleTorqueLimit : kServoTorqueLimit;
-    if (b.balance_qp) continue;  // the QP writes joint torques (d.tau); no servo springs in the model
+    j.twist_scale = parent_space ? 1.0 : b.settings.tuning.servo.planted_twist_scale;
+    j.K = eng::control::servo_k1(b.settings.gains, I[i]);
+    j.D = eng::control::servo_k2(b.settings.gains, I[i]);
+    j.limit = j.planted ? b.settings.tuning.servo.ankle_torque_limit : b.settings.tuning.servo.servo_torque_limit;
+    // The QP writes joint torques (d.tau): no servo springs in the model.
+    if (!std::visit([](const auto& c) { return model_springs(c); }, b.ctl.balance)) continue;
     body.stiffness = j.K;
     body.damping += j.D;  // on top of the content's passive joint damping
   }
-  b.q_joint.assign(n, Eigen::Vector3d::Zero());
-  b.spring_ref.assign(n, Eigen::Vector3d::Zero());
+  b.scratch.q_joint.assign(n, Eigen::Vector3d::Zero());
+  b.scratch.spring_ref.assign(n, Eigen::Vector3d::Zero());
 }
+
+}  // namespace
 
 void add_boxer(World& w, int index, const Eigen::Vector3f& color, bool limp, const Stance& stance) {
   Boxer b;
@@ -148,29 +132,41 @@ void add_boxer(World& w, int index, const Eigen::Vector3f& color, bool limp, con
   b.team_color = color;
   b.stance = stance;
   b.limp = limp;
+  b.bones = eng::control::biped_bones(w.boxer_desc.skeleton);
+  if (w.options.contact_gap >= 0.0) {  // the unified-threshold experiment (docs/decisions/foot-contact-thresholds.md)
+    eng::control::FootContactThresholds& t = b.settings.tuning.contact;
+    t.support = t.load = t.fallen = w.options.contact_gap;
+    b.settings.tuning.qp.touch_gap = w.options.contact_gap;
+  }
   const uint32_t group = 2u << index;
   b.bodies = add_character(w.model, w.boxer_desc, "b" + std::to_string(index) + "_", group, 0xffffffffu, false);
-  b.space = servo_space_from_name(w.options.servo);
-  b.balance_qp = !limp && w.options.balance == "qp" && b.space != eng::control::ServoSpace::Parent &&
-                 b.space != eng::control::ServoSpace::ParentMeathook;
-  b.gains.omega_n = w.options.servo_omega_n;
-  b.gains.zeta = w.options.servo_zeta;
-  b.gains.stable_pd = true;
-  b.gains.dt = kPhysicsDt;
+  b.settings.space = servo_space_from_name(w.options.servo);
+  // The balance controller: the QP (--balance qp) for a servo rooted at the feet, else the PD layer.
+  if (!limp && w.options.balance == "qp" && b.settings.space != eng::control::ServoSpace::Parent &&
+      b.settings.space != eng::control::ServoSpace::ParentMeathook)
+    b.ctl.balance = QpBalance{};
+  else
+    b.ctl.balance = PdBalance{};
+  b.settings.gains.omega_n = w.options.servo_omega_n;
+  b.settings.gains.zeta = w.options.servo_zeta;
+  b.settings.gains.stable_pd = true;
+  b.settings.gains.dt = kPhysicsDt;
   b.control_body = control_body_of(w.boxer_desc);
-  b.servo.resize(w.boxer_desc.skeleton.size());
+  b.ctl.servo.resize(w.boxer_desc.skeleton.size());
   if (!limp) setup_implicit_servo(w, b);
   // The root spring: asked for, or (auto) for the paper's boxers, the graph walk and the match.
-  const bool boxers = w.options.scenario == "graph-walk" || w.options.scenario == "match";
-  b.root_params.enabled = !limp && (w.options.root_spring == "on" || (w.options.root_spring == "auto" && boxers));
-  b.root_params.max_torque = w.options.root_spring_max >= 0.0 ? w.options.root_spring_max
-                             : b.balance_qp                   ? kRootAssistMax
-                                                              : kRootSpringMax;
+  const bool boxers = scenario_hooks(w.options.scenario_id).walks_graph;
+  b.settings.root_params.enabled = !limp && (w.options.root_spring == "on" || (w.options.root_spring == "auto" && boxers));
+  b.settings.root_params.max_torque = w.options.root_spring_max >= 0.0 ? w.options.root_spring_max
+                                      : b.uses_qp()                   ? b.settings.tuning.root.assist_max
+                                                                      : b.settings.tuning.root.spring_max;
   // Under the balance QP the root spring is the QP's root assist (balance_qp.h): the plan chooses the torque.
-  b.qp_params.w_root_assist = b.root_params.enabled ? kRootAssistPrice : 0.0;
-  b.qp_params.max_root_assist = b.root_params.max_torque;
-  b.qp_params.w_torque = b.root_params.enabled ? kQpTorquePrice : 0.0;
-  if (w.options.scenario == "graph-walk" || w.options.scenario == "match") {
+  if (QpBalance* q = std::get_if<QpBalance>(&b.ctl.balance)) {
+    q->params.w_root_assist = b.settings.root_params.enabled ? b.settings.tuning.root.assist_price : 0.0;
+    q->params.max_root_assist = b.settings.root_params.max_torque;
+    q->params.w_torque = b.settings.root_params.enabled ? b.settings.tuning.root.qp_torque_price : 0.0;
+  }
+  if (scenario_hooks(w.options.scenario_id).walks_graph) {
     // The paper's boxers: a seeded random walk of the motion graph (each boxer its own stream).
     b.source = PoseSource::graph_walk(w.graph, w.options.seed * 2654435761ull + uint64_t(index));
   } else {
@@ -187,8 +183,6 @@ void place_boxer(World& w, Boxer& b) {
   place_desired_pose(w.boxer_desc, w.arena, b, b.desired);
   set_character_pose(w.model, w.data, b.bodies, w.boxer_desc, b.desired.pose.root_position, b.desired.pose.rotation);
 }
-
-}  // namespace
 
 eng::Result<std::unique_ptr<World>> make_world(const Options& o) {
   auto w = std::make_unique<World>();
@@ -213,65 +207,17 @@ eng::Result<std::unique_ptr<World>> make_world(const Options& o) {
   add_static_arena(*w);
 
   Rng rng(o.seed ^ 0xB0C5ull);
-  if (o.scenario == "ragdolls") {
-    // Limp humanoids and loose crates dropped onto the arena from a seeded layout.
-    for (int k = 0; k < 3; ++k) {
-      Stance s;
-      s.position = {rng.uniform(-1.0, 1.0), rng.uniform(-0.6, 0.6)};
-      s.heading = rng.uniform(-M_PI, M_PI);
-      s.lead_top = s.rear_top = 0.9 + 0.5 * k;
-      add_boxer(*w, k, Eigen::Vector3f(0.55f + 0.2f * k, 0.5f, 0.9f - 0.25f * k), true, s);
-    }
-    for (int k = 0; k < 4; ++k) {
-      eng::physics::Body body;
-      body.name = "crate" + std::to_string(k);
-      body.joint = eng::physics::JointType::Free;
-      const double h = rng.uniform(0.12, 0.2);
-      body.mass = 6.0;
-      body.inertia = (body.mass / 3.0 * h * h) * Eigen::Matrix3d::Identity();
-      const int id = w->model.add_body(body);
-      Geom g;
-      g.shape.type = ShapeType::Box;
-      g.shape.half_extents = Eigen::Vector3d(h, h, h);
-      g.body = id;
-      g.group = 1u << 10;
-      w->model.add_geom(g);
-      w->loose.push_back(LooseBody{id, g.shape, Eigen::Vector3f(0.5f, 0.33f, 0.17f)});
-    }
-  } else {
-    if (o.scenario == "graph-walk" || o.scenario == "match")
-      w->graph.build(w->clips, eng::anim::GraphOptions{}, boxing_graph_options(w->boxer_desc.skeleton),
-                     w->boxer_desc.skeleton);
-    add_boxer(*w, 0, Eigen::Vector3f(0.75f, 0.08f, 0.06f), false, w->arena.stances[0]);
-    // graph-walk: one boxer tracking the walk alone (issue: the servo against a 10-minute random walk).
-    if (o.scenario != "graph-walk") add_boxer(*w, 1, Eigen::Vector3f(0.06f, 0.18f, 0.75f), false, w->arena.stances[1]);
-  }
+  const ScenarioHooks& scenario = scenario_hooks(o.scenario_id);
+  if (scenario.walks_graph)
+    w->graph.build(w->clips, eng::anim::GraphOptions{}, boxing_graph_options(w->boxer_desc.skeleton),
+                   w->boxer_desc.skeleton);
+  scenario.setup(*w, rng);
   w->model.finalize();
   w->data = eng::physics::make_data(w->model);
 
-  if (o.scenario == "ragdolls") {
-    for (Boxer& b : w->boxers) {
-      b.desired = b.source.tick(0.0);
-      place_desired_pose(w->boxer_desc, w->arena, b, b.desired);
-      // Tumble: tilt the whole body by a random rotation before dropping it.
-      const Eigen::Quaterniond tilt(Eigen::AngleAxisd(rng.uniform(0.3, 1.4),
-                                                      Eigen::Vector3d(rng.uniform(-1, 1), rng.uniform(-1, 1), 0.2)
-                                                          .normalized()));
-      b.desired.pose.rotation[0] = tilt * b.desired.pose.rotation[0];
-      set_character_pose(w->model, w->data, b.bodies, w->boxer_desc, b.desired.pose.root_position,
-                         b.desired.pose.rotation);
-    }
-    for (size_t k = 0; k < w->loose.size(); ++k) {
-      const auto& body = w->model.bodies[w->loose[k].body];
-      double* q = w->data.q.data() + body.q_index;
-      q[0] = rng.uniform(-1.2, 1.2), q[1] = rng.uniform(-0.8, 0.8), q[2] = 1.5 + 0.4 * k;
-      const Eigen::Quaterniond r(Eigen::AngleAxisd(rng.uniform(0, 3), Eigen::Vector3d(0.3, 0.5, 0.8).normalized()));
-      q[3] = r.w(), q[4] = r.x(), q[5] = r.y(), q[6] = r.z();
-    }
-  } else {
-    for (Boxer& b : w->boxers) place_boxer(*w, b);
-  }
+  scenario.place(*w, rng);
   eng::physics::forward_kinematics(w->model, w->data);
+  for (Boxer& b : w->boxers) boxer_sense_contacts(w->data, b);
   return w;
 }
 
@@ -283,21 +229,15 @@ void step_world(World& w) {
   eng::physics::forward_kinematics(w.model, w.data);
   for (Boxer& b : w.boxers) boxer_control(w.model, w.data, w.boxer_desc, w.arena, b, kPhysicsDt);
 
-  // Push scenario: a horizontal force at boxer 0's chest, direction in its heading frame (0 = where it faces).
-  const Options& o = w.options;
+  // The scenario's forces (the push scenario's chest push).
+  const ScenarioHooks& scenario = scenario_hooks(w.options.scenario_id);
   w.push_active = false;
-  if (o.scenario == "push" && !w.boxers.empty() && o.push_force > 0 && w.data.time >= o.push_at &&
-      w.data.time < o.push_at + o.push_duration) {
-    const Boxer& b = w.boxers[0];
-    const double a = b.stance.heading + o.push_dir_deg * M_PI / 180.0;
-    const Eigen::Vector3d f(o.push_force * std::cos(a), o.push_force * std::sin(a), 0.0);
-    const int chest = b.bodies.body[w.boxer_desc.skeleton.find("chest")];
-    eng::physics::apply_force_at_point(w.model, w.data, chest, f, w.data.com_world[chest]);
-    w.push_active = true;
-  }
+  if (scenario.before_step) scenario.before_step(w);
 
   eng::physics::step(w.model, w.data);
+  for (Boxer& b : w.boxers) boxer_sense_contacts(w.data, b);
   for (Boxer& b : w.boxers) boxer_measure(w.model, w.data, w.boxer_desc, b, kPhysicsDt);
+  if (scenario.after_step) scenario.after_step(w);
   ++w.steps;
   w.physics_ms_total += std::chrono::duration<double, std::milli>(clock::now() - t0).count();
 }
@@ -317,7 +257,7 @@ nlohmann::json world_report(const World& w) {
       total_up += m.err_sq_upright[i] / m.samples_upright;
     }
     boxers.push_back({{"index", b.index},
-                      {"servo", b.limp ? "limp" : servo_space_name(b.space)},
+                      {"servo", b.limp ? "limp" : servo_space_name(b.settings.space)},
                       {"fell", m.fell},
                       {"fell_at_s", m.fell_at},
                       {"steps_taken", m.steps_taken},
@@ -327,8 +267,8 @@ nlohmann::json world_report(const World& w) {
                       {"time_upright_s", m.time_upright},
                       {"max_com_speed", m.max_com_speed},
                       {"root_spring",
-                       {{"enabled", b.root_params.enabled},
-                        {"max_torque_nm", b.root_params.max_torque},
+                       {{"enabled", b.settings.root_params.enabled},
+                        {"max_torque_nm", b.settings.root_params.max_torque},
                         {"rms_torque_nm", m.time_upright > 0 ? std::sqrt(m.root_torque_sq_dt / m.time_upright) : 0.0},
                         {"peak_torque_nm", m.root_torque_peak},
                         {"saturated_fraction", m.time_upright > 0 ? m.root_saturated_time / m.time_upright : 0.0}}},
@@ -346,19 +286,12 @@ nlohmann::json world_report(const World& w) {
                       {"feet_start", {std::vector<double>(m.foot0[0].data(), m.foot0[0].data() + 3),
                                       std::vector<double>(m.foot0[1].data(), m.foot0[1].data() + 3)}}});
   }
-  nlohmann::json r = {{"scenario", w.options.scenario},
+  nlohmann::json r = {{"scenario", scenario_name(w.options.scenario_id)},
                       {"physics_steps", w.steps},
                       {"physics_dt", kPhysicsDt},
                       {"physics_ms_per_step", w.steps ? w.physics_ms_total / w.steps : 0.0},
                       {"boxers", boxers}};
-  if (w.options.scenario == "push") {
-    const double momentum = w.options.push_force * w.options.push_duration;
-    r["push"] = {{"dir_deg", w.options.push_dir_deg},
-                 {"force_n", w.options.push_force},
-                 {"duration_s", w.options.push_duration},
-                 {"at_s", w.options.push_at},
-                 {"momentum_kg_m_s", momentum}};
-  }
+  if (const auto report = scenario_hooks(w.options.scenario_id).report) report(w, r);
   return r;
 }
 

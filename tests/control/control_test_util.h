@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "engine/anim/skeleton.h"
-#include "engine/control/orientation_error.h"
+#include "engine/control/servo/orientation_error.h"
 
 namespace eng::control::test {
 

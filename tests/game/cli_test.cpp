@@ -90,3 +90,31 @@ TEST(Cli, HelpListsTheRequiredFlags) {
                         "--scenario", "--servo", "--push-dir"})
     EXPECT_NE(h.find(f), std::string::npos) << f;
 }
+
+TEST(Cli, EveryScenarioNameParsesToItsEnumAndBack) {
+  using boxing::Scenario;
+  const std::pair<const char*, Scenario> names[] = {{"arena", Scenario::Arena},         {"ragdolls", Scenario::Ragdolls},
+                                                    {"stand", Scenario::Stand},         {"push", Scenario::Push},
+                                                    {"graph-walk", Scenario::GraphWalk}, {"match", Scenario::Match}};
+  for (const auto& [name, id] : names) {
+    auto o = parse_cli({"--scenario", name});
+    ASSERT_TRUE(o.ok()) << name;
+    EXPECT_EQ(o->scenario_id, id) << name;
+    EXPECT_EQ(o->scenario, name);
+    EXPECT_STREQ(boxing::scenario_name(id), name);
+    // The help lists it.
+    EXPECT_NE(boxing::help_text().find(name), std::string::npos) << name;
+  }
+  EXPECT_EQ(parse_cli({})->scenario_id, Scenario::Arena);
+  EXPECT_FALSE(boxing::scenario_from_name("Arena").has_value()) << "names are the flag's, case and all";
+}
+
+TEST(Cli, ContactGapIsOffByDefaultAndParsedInMetres) {
+  EXPECT_LT(parse_cli({})->contact_gap, 0.0) << "each foot-contact purpose keeps its own gap by default";
+  auto o = parse_cli({"--contact-gap", "0.002"});
+  ASSERT_TRUE(o.ok());
+  EXPECT_DOUBLE_EQ(o->contact_gap, 0.002);
+  auto bad = parse_cli({"--contact-gap", "0.5"});
+  ASSERT_FALSE(bad.ok());
+  EXPECT_NE(bad.error().find("--contact-gap"), std::string::npos);
+}

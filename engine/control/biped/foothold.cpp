@@ -1,0 +1,71 @@
+#include "engine/control/biped/foothold.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace eng::control {
+
+namespace {
+constexpr int kAlong = 7, kAcross = 3;  // sample grid over a rectangle (ends and sides included)
+
+// Samples the rectangle [a0, a1] x [-w, w] of the foot frame; calls f(top) for each sample's crate top.
+template <class F>
+void sample_rect(GroundHeight ground, const Eigen::Vector2d& ankle, double yaw, double a0, double a1, double w, F f) {
+  const Eigen::Vector2d ex(std::cos(yaw), std::sin(yaw)), ey(-ex.y(), ex.x());
+  for (int i = 0; i < kAlong; ++i) {
+    const double a = a0 + (a1 - a0) * i / (kAlong - 1);
+    for (int j = 0; j < kAcross; ++j) {
+      const double s = -w + 2.0 * w * j / (kAcross - 1);
+      const Eigen::Vector2d q = ankle + a * ex + s * ey;
+      f(ground(q.x(), q.y()));
+    }
+  }
+}
+}  // namespace
+
+bool foothold_ok(GroundHeight ground, const Eigen::Vector2d& ankle, double yaw, const FootholdParams& p) {
+  const SoleShape& s = p.sole;
+  double highest = -1e9;
+  sample_rect(ground, ankle, yaw, s.heel, s.toe, s.half_width, [&](double t) { highest = std::max(highest, t); });
+  bool ok = true;
+  sample_rect(ground, ankle, yaw, s.heel + p.end_margin, s.toe - p.end_margin, s.half_width - p.side_margin,
+              [&](double t) { ok = ok && t >= highest - p.level_tol; });
+  return ok;
+}
+
+Foothold find_foothold(GroundHeight ground, const Eigen::Vector2d& ankle, double yaw, double frame_yaw,
+                       const FootholdParams& p) {
+  Foothold r;
+  if (foothold_ok(ground, ankle, yaw, p)) {
+    r.found = true;
+    return r;
+  }
+  // Candidates in order of cost; the first good one wins (ties: the grid order, deterministic).
+  const int n = static_cast<int>(std::floor(p.max_shift / p.grid));
+  struct Candidate {
+    double cost;
+    int i, j;
+  };
+  std::vector<Candidate> cand;
+  cand.reserve((2 * n + 1) * (2 * n + 1));
+  for (int i = -n; i <= n; ++i)
+    for (int j = -n; j <= n; ++j) {
+      const double a = i * p.grid, c = j * p.grid;
+      if (a * a + c * c > p.max_shift * p.max_shift + 1e-12) continue;
+      cand.push_back({a * a + p.lateral_cost * c * c, i, j});
+    }
+  std::stable_sort(cand.begin(), cand.end(), [](const Candidate& x, const Candidate& y) { return x.cost < y.cost; });
+  const Eigen::Vector2d ex(std::cos(frame_yaw), std::sin(frame_yaw)), ey(-ex.y(), ex.x());
+  for (const Candidate& c : cand) {
+    const Eigen::Vector2d s = c.i * p.grid * ex + c.j * p.grid * ey;
+    if (foothold_ok(ground, ankle + s, yaw, p)) {
+      r.shift = s;
+      r.found = true;
+      return r;
+    }
+  }
+  return r;
+}
+
+}  // namespace eng::control

@@ -1,0 +1,44 @@
+#pragma once
+// LIFT-OFF GATING. A clip's step lifts a foot on its own schedule; the physical body may not have its weight over
+// the other foot yet, and a balance controller then has one foot's support for a com outside it. So a foot leaves
+// the ground only when the capture point (capture_point.h) lies inside the other (stance) foot's contact hull, less
+// a margin; until then it is held planted (`holding`: the caller moves the com target over the stance foot, the
+// weight shift before a step). A step held longer than max_hold, or whose clip touch-down is nearer than min_swing,
+// is skipped: the foot stays down until the clip lands it. Measurements: docs/decisions/lift-off-gate.md.
+//
+// Per foot and tick, in two calls so the caller only builds the decision's inputs (stance contacts, capture point,
+// the clip's time to touch-down) when a decision is due:
+//   if (lift_off_gate_due(gate, swing, active)) event = lift_off_gate_decide(gate, swing, ...);
+#include <Eigen/Core>
+#include <vector>
+
+namespace eng::control {
+
+struct LiftOffGateTuning {
+  double margin = 0.01;     // m, the capture point must lie this far inside the stance foot's hull (a step not near the edge)
+  double max_hold = 0.25;   // s, a step held down longer is skipped (a weight shift that never comes)
+  double min_swing = 0.12;  // s, a step opened later than this before the clip's touch-down is skipped (too short to swing)
+};
+
+struct LiftGate {
+  bool lifted = false;   // the foot left the ground for this step
+  bool holding = false;  // the clip lifts it, it is held down (weight shift under way)
+  bool skipped = false;  // held too long: this step is not taken (the foot stays planted until the clip lands it)
+  double held = 0.0;     // s held so far
+};
+
+enum class GateEvent { None, StepTaken, StepSkipped };
+
+// The bookkeeping before a decision: a foot the clip does not lift resets its gate; a lifted step, or an inactive
+// gate (active = false: a fallen body), leaves `swing` as the clip has it; a skipped step keeps the foot down
+// (swing = false). True when this tick needs lift_off_gate_decide.
+bool lift_off_gate_due(LiftGate& g, bool& swing, bool active);
+
+// The decision for a foot the clip lifts: stance_points are the stance foot's touching contact points (floor x, y;
+// fewer than 2 never open), xi the capture point, swing_left the clip's time to touch-down (s). Opens (swing stays
+// true, StepTaken) or holds (swing = false; StepSkipped once held past max_hold or too late). hull: scratch.
+GateEvent lift_off_gate_decide(LiftGate& g, bool& swing, const std::vector<Eigen::Vector2d>& stance_points,
+                               const Eigen::Vector2d& xi, double swing_left, double dt, const LiftOffGateTuning& t,
+                               std::vector<Eigen::Vector2d>& hull);
+
+}  // namespace eng::control

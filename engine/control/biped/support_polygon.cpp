@@ -1,0 +1,74 @@
+// Support polygon (see support_polygon.h).
+#include "engine/control/biped/support_polygon.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace eng::control {
+
+namespace {
+double cross(const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
+}
+
+Eigen::Vector2d closest_on_segment(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& p) {
+  const Eigen::Vector2d ab = b - a;
+  const double len2 = ab.squaredNorm();
+  const double t = len2 > 0.0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
+  return a + t * ab;
+}
+}  // namespace
+
+void convex_hull_2d(std::vector<Eigen::Vector2d> pts, std::vector<Eigen::Vector2d>& hull) {
+  std::sort(pts.begin(), pts.end(), [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+    return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
+  });
+  pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
+  hull.clear();
+  if (pts.size() < 3) {
+    hull = pts;
+    return;
+  }
+  std::vector<Eigen::Vector2d> h(2 * pts.size());
+  size_t k = 0;
+  for (const auto& p : pts) {  // lower hull
+    while (k >= 2 && cross(h[k - 2], h[k - 1], p) <= 0.0) --k;
+    h[k++] = p;
+  }
+  for (size_t i = pts.size() - 1, t = k + 1; i-- > 0;) {  // upper hull
+    while (k >= t && cross(h[k - 2], h[k - 1], pts[i]) <= 0.0) --k;
+    h[k++] = pts[i];
+  }
+  h.resize(k - 1);  // the last point repeats the first
+  hull = h;
+}
+
+Eigen::Vector2d clamp_to_polygon(const std::vector<Eigen::Vector2d>& hull, const Eigen::Vector2d& p, double margin) {
+  const size_t n = hull.size();
+  if (n == 0) return p;
+  if (n == 1) return hull[0];
+  if (n == 2) return closest_on_segment(hull[0], hull[1], p);
+  Eigen::Vector2d c = Eigen::Vector2d::Zero();
+  for (const auto& v : hull) c += v;
+  c /= static_cast<double>(n);
+  // Shrink toward the centroid by `margin`, but never past half the vertex's distance to it.
+  std::vector<Eigen::Vector2d> s(n);
+  for (size_t i = 0; i < n; ++i) {
+    const Eigen::Vector2d d = hull[i] - c;
+    const double len = d.norm();
+    s[i] = len > 0.0 ? Eigen::Vector2d(c + d * std::max(0.5, 1.0 - margin / len)) : c;
+  }
+  bool inside = true;
+  for (size_t i = 0; i < n && inside; ++i) inside = cross(s[i], s[(i + 1) % n], p) >= 0.0;
+  if (inside) return p;
+  Eigen::Vector2d best = s[0];
+  double best_d2 = INFINITY;
+  for (size_t i = 0; i < n; ++i) {
+    const Eigen::Vector2d q = closest_on_segment(s[i], s[(i + 1) % n], p);
+    const double d2 = (q - p).squaredNorm();
+    if (d2 < best_d2) best_d2 = d2, best = q;
+  }
+  return best;
+}
+
+}  // namespace eng::control

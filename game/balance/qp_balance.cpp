@@ -1,0 +1,199 @@
+// The balance QP controller (qp_balance.h).
+#include "game/balance/qp_balance.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "engine/control/biped/support_polygon.h"
+#include "engine/control/servo/orientation_error.h"
+#include "engine/control/servo/person_space.h"
+#include "engine/control/servo/world_pose.h"
+#include "engine/physics/dynamics.h"
+#include "game/balance/balance_controller.h"
+#include "game/balance/com_support.h"
+#include "game/boxer.h"
+
+namespace boxing {
+
+using eng::control::pose_fk;
+
+double stance_drop(const QpBalance&, const Boxer& b) { return b.settings.tuning.qp.stance_drop; }
+
+// The balance QP's inputs for one boxer (balance_qp.h), solved, and its joint torques written to d.tau.
+//  * Contacts: the touching contact points (gap < BalanceQpTuning::touch_gap) with the crates, from the last step: of the feet
+//    the clip plants and of any other link (a knee, a hand).
+//  * Com: PD toward the desired pose's com, measured against the support (desired com - desired feet centre,
+//    put on the actual feet centre), with the clip's com velocity over its feet as feed-forward: Kudoh's com
+//    acceleration as a PD target (thesis sec. 2.5.1). The target is clamped into the contacts' support polygon.
+//  * Angular momentum about the com damped toward zero.
+//  * Every bone: eq. 3 as an acceleration, alpha = omega_n^2 Delta(W_d, W_a) + 2 zeta omega_n (omega_d - omega_a),
+//    weighted by the bone's servo inertia (heavy subtrees matter most, as eq. 3's gains scale with them).
+//  * Touching feet: their contact points held (balance_qp.h) and a strong orientation task (clip's tilt, own
+//    heading); swing feet: the ankle toward its step's target (PD, plan_steps); a planted foot that hovers is lowered.
+// Measured against the PD balance layer (README): stand and 150 N pushes as good, larger pushes, every punch and
+// defence drill, tracking and the walk better.
+// Tuning: BalanceQpTuning (qp_balance.h); measurements docs/decisions/balance-qp-tuning.md.
+void actuate(QpBalance& q, BalanceTick& tick) {
+  const eng::physics::Model& m = tick.m;
+  eng::physics::Data& d = tick.d;
+  const eng::assets::CharacterDesc& desc = tick.desc;
+  Boxer& b = tick.b;
+  const bool* loaded = tick.loaded;
+  const double dt = tick.dt;
+  const BalanceQpTuning& tq = b.settings.tuning.qp;
+  // The root spring is the QP's root assist: "lowers its motor gains when knocked out" (paper Fig. 7), the assist's
+  // limit scales with consciousness.
+  b.ctl.root_spring.update(b.settings.root_params, dt);
+  q.params.max_root_assist = b.settings.root_params.max_torque * b.ctl.root_spring.consciousness();
+  namespace ph = eng::physics;
+  const auto& skel = desc.skeleton;
+  const int n = skel.size();
+  const int pelvis = b.bodies.body[0];
+  eng::control::BalanceQpInput& in = q.in;
+  in.clear();
+  in.root_body = pelvis;
+  in.dof_begin = m.bodies[pelvis].v_index;
+  in.dof_end = in.dof_begin;
+  for (size_t i = 1; i < m.bodies.size(); ++i)
+    if (m.bodies[i].root == pelvis) in.dof_end = std::max(in.dof_end, m.bodies[i].v_index + m.bodies[i].nv);
+  const int* feet = b.bones.foot;
+  if (b.ctl.state.fallen()) {
+    // DOWN: the QP stands a boxer, it does not yet move one lying on the crates (the stand-ups are the match's
+    // work). Its torques on a lying body, its links pressed on the ground, made the limbs flail at 30-80 rad/s and
+    // the simulation diverge within 1-4 s (walk seed 3, even with every ground contact in the plan, accelerations
+    // capped at 200 rad/s^2 or torques at 400 N m). So a fallen boxer goes limp (the passive joint damping stays).
+    for (int k = in.dof_begin; k < in.dof_end; ++k) d.tau[k] = 0.0;
+    return;
+  }
+
+  // Contacts of the planted feet. A foot is held (planted) only while it actually touches (FootContacts::on_ground):
+  // a foot the clip plants but that hovers a little above its crate is lowered onto it instead (below).
+  const bool touching[2] = {loaded[0] && b.ctl.contacts.on_ground[0], loaded[1] && b.ctl.contacts.on_ground[1]};
+  for (const auto& c : d.contacts) {
+    if (c.point.depth < -tq.touch_gap) continue;  // speculative, not touching
+    if (c.body_a != 0 && c.body_b != 0) continue;  // only the crates and floor (static) carry the body
+    const int body = c.body_a == 0 ? c.body_b : c.body_a;
+    if (m.bodies[body].root != pelvis) continue;
+    int foot = -1;
+    for (int k = 0; k < 2; ++k)
+      if (body == b.bodies.body[feet[k]]) foot = k;
+    // Every other link touching the ground (a knee, a hand) is a contact of the plan too: left out, the plan
+    // would assume that link moves freely and push it into the crate.
+    if (foot >= 0 && !loaded[foot]) continue;  // a swing foot brushing the crate carries nothing
+    eng::control::QpContact qc;
+    qc.body = body;
+    qc.point = c.point.position;
+    qc.normal = c.body_b == body ? c.point.normal : Eigen::Vector3d(-c.point.normal);
+    qc.mu = tq.mu;
+    in.contacts.push_back(qc);
+  }
+
+  // Desired pose FK (after anchoring / leg fitting): com and feet.
+  std::vector<Eigen::Quaterniond>& Wd = b.scratch.fk_W;
+  std::vector<Eigen::Vector3d>& Pd = b.scratch.fk_P;
+  pose_fk(skel, b.desired.pose, Wd, Pd);
+  const ComAndSupport cs = com_and_support(d, desc, b, Wd, Pd, feet, loaded);
+  const Eigen::Vector3d &com_a = cs.com_a, &vcom = cs.vcom, &com_d = cs.com_d, &centre_a = cs.centre_a,
+                        &centre_d = cs.centre_d;
+  const int nl = cs.feet;
+  Eigen::Vector3d rel_d = com_d - centre_d;  // the clip's com over its feet
+  if (nl == 0) rel_d.setZero();
+  // The clip's com velocity over its feet, differenced tick to tick; not across a change of the planted feet
+  // (the support centre jumps) and at most tq.max_com_speed.
+  const int support_set = (loaded[0] ? 1 : 0) | (loaded[1] ? 2 : 0);
+  Eigen::Vector3d v_d = Eigen::Vector3d::Zero();
+  if (q.have_com_d && support_set == q.support_set) v_d = (rel_d - q.com_d_rel_last) / dt;
+  if (v_d.norm() > tq.max_com_speed) v_d *= tq.max_com_speed / v_d.norm();
+  q.com_d_rel_last = rel_d;
+  q.support_set = support_set;
+  q.have_com_d = true;
+  if (nl > 0) {
+    Eigen::Vector3d e = (com_a - centre_a) - rel_d;
+    e.z() = com_a.z() - com_d.z();
+    // The target's floor projection clamped into the support polygon of the touching contacts (less a margin):
+    // a target the ground reaction cannot reach (after a step that landed short, say) is not chased over the edge.
+    if (!in.contacts.empty()) {
+      q.pts.clear();
+      for (const auto& c : in.contacts) q.pts.push_back(c.point.head<2>());
+      eng::control::convex_hull_2d(q.pts, q.hull);
+      Eigen::Vector2d target = eng::control::clamp_to_polygon(q.hull, com_a.head<2>() - e.head<2>(), tq.support_margin);
+      // A step held for its weight shift (gate_lift_off): the target goes over the other foot's contacts.
+      for (int k = 0; k < 2; ++k) {
+        if (!b.ctl.gate[k].holding) continue;
+        const int other = b.bodies.body[feet[1 - k]];
+        q.pts.clear();
+        for (const auto& c : in.contacts)
+          if (c.body == other) q.pts.push_back(c.point.head<2>());
+        if (q.pts.empty()) continue;
+        eng::control::convex_hull_2d(q.pts, q.hull);
+        target = eng::control::clamp_to_polygon(q.hull, target, tq.shift_margin);
+      }
+      e.head<2>() = com_a.head<2>() - target;
+    }
+    const double kp = tq.com_omega * tq.com_omega, kd = 2.0 * tq.com_omega;
+    in.com_acc = -kp * e - kd * (vcom - v_d);
+    if (in.com_acc.norm() > tq.max_com_acc) in.com_acc *= tq.max_com_acc / in.com_acc.norm();
+    const ph::Vec6 h = ph::spatial_momentum(m, d, pelvis);
+    const Eigen::Vector3d k_com = h.head<3>() - com_a.cross(h.tail<3>());
+    in.momentum_rate = -tq.momentum_damping * k_com;
+  } else {
+    in.com_acc = m.gravity;  // airborne: nothing to plan with
+  }
+
+  // Bone orientation tasks (eq. 3 as accelerations).
+  const double wn = b.settings.gains.omega_n, kp = wn * wn, kd = 2.0 * b.settings.gains.zeta * wn;
+  for (int i = 0; i < n; ++i) {
+    eng::control::QpAngularTask t;
+    t.body = b.bodies.body[i];
+    t.alpha = kp * eng::control::orientation_error(b.ctl.servo.W_d[i], b.scratch.W_a[i]) + kd * (b.ctl.servo.omega_d[i] - b.scratch.omega_a[i]);
+    t.weight = b.control_body.I_eff[i];
+    in.angular.push_back(t);
+  }
+  for (int k = 0; k < 2; ++k) {
+    const int fb = b.bodies.body[feet[k]];
+    if (touching[k]) {
+      // Held through its contact points (balance_qp.h); the foot's orientation task rolls a foot standing on an
+      // edge or corner flat about it, strongly (the sole is the support).
+      // The target keeps the clip's tilt of the foot but takes the foot's actual heading: the contacts have no
+      // torsional friction, so a planted foot is not twisted toward the clip's yaw (the body turns above it).
+      const Eigen::Quaterniond& Wd_foot = b.ctl.servo.W_d[feet[k]];
+      const Eigen::Quaterniond target =
+          eng::control::yaw_rotation(eng::control::heading_of(b.scratch.W_a[feet[k]]) - eng::control::heading_of(Wd_foot)) *
+          Wd_foot;
+      in.angular[feet[k]].alpha = kp * eng::control::orientation_error(target, b.scratch.W_a[feet[k]]) - kd * b.scratch.omega_a[feet[k]];
+      in.angular[feet[k]].weight = tq.planted_foot_weight;
+    } else {
+      eng::control::QpPointTask t;
+      t.body = fb;
+      t.point = d.x[fb].p;
+      const Eigen::Vector3d v = d.v_body[fb].tail<3>() + d.v_body[fb].head<3>().cross(t.point);
+      // A planted-but-hovering foot aims tq.land below where it is (it comes down onto the crate).
+      // A swing foot aims at its step's target (plan_steps: the clip's ankle, moved onto a good foothold).
+      const eng::control::StepPlan& step = b.ctl.step[k];
+      const Eigen::Vector3d swing_target = step.active ? step.target : Pd[feet[k]];
+      const Eigen::Vector3d target = loaded[k] ? Eigen::Vector3d(t.point - Eigen::Vector3d(0, 0, tq.land)) : swing_target;
+      // The target's velocity as feed-forward (a step's swing moves at 1-2 m/s: PD alone lags ~2 zeta v / wn,
+      // 10-20 cm). Differenced tick to tick, the height from the clip's own (the crate under the foot changes in
+      // jumps); zero on the tick a foot leaves the support.
+      const Eigen::Vector3d ff_point(swing_target.x(), swing_target.y(), step.active ? step.clip_z : swing_target.z());
+      Eigen::Vector3d v_ff = Eigen::Vector3d::Zero();
+      if (!loaded[k] && q.swing_prev[k]) v_ff = (ff_point - q.swing_target_prev[k]) / dt;
+      if (v_ff.norm() > tq.max_swing_speed) v_ff *= tq.max_swing_speed / v_ff.norm();
+      q.swing_target_prev[k] = ff_point;
+      t.acc = kp * (target - t.point) + kd * ((loaded[k] ? Eigen::Vector3d::Zero() : v_ff) - v);
+      t.weight = tq.swing_weight * desc.bones[feet[k]].mass;
+      in.points.push_back(t);
+    }
+  }
+  for (int k = 0; k < 2; ++k) q.swing_prev[k] = !loaded[k] && !touching[k];
+  eng::control::balance_qp_solve(m, d, in, q.params, q.ws, q.out);
+  // A non-finite solve (never seen standing; a guard) leaves the joints limp for the tick instead of poisoning the
+  // whole simulation.
+  const bool finite = q.out.tau.allFinite();
+  // The root rows: the root assist's generalised force (zero when it is off).
+  for (int k = 0; k < in.dof_end - in.dof_begin; ++k) d.tau[in.dof_begin + k] = finite ? q.out.tau[k] : 0.0;
+  b.ctl.root_torque = finite ? q.out.root_assist : Eigen::Vector3d::Zero();
+}
+
+
+}  // namespace boxing

@@ -1,0 +1,55 @@
+#pragma once
+// The balance QP controller (--balance qp, the default): joint torques for the whole body from
+// engine/control/balance/balance_qp.h (contacts, com and momentum tasks, eq. 3 per bone as accelerations, swing
+// feet toward their steps), the root spring as the QP's root assist. One of the two balance controllers
+// (balance_controller.h).
+#include <Eigen/Core>
+#include <vector>
+
+#include "engine/control/balance/balance_qp.h"
+
+namespace boxing {
+
+struct Boxer;
+struct BalanceTick;
+
+// Tuning (read every tick). Measurements: docs/decisions/balance-qp-tuning.md.
+struct BalanceQpTuning {
+  double com_omega = 6.0;             // rad/s, com PD natural frequency (critically damped)
+  double momentum_damping = 4.0;      // 1/s, angular momentum about the com damped toward zero
+  double mu = 0.6;                    // friction used in the plan (the crates and soles have 0.9: a margin)
+  double planted_foot_weight = 50.0;  // kg m^2, a touching foot's orientation task (little effect 1-500)
+  double touch_gap = 0.002;           // m, a contact closer than this carries load in the plan
+  double land = 0.03;                 // m, a planted-but-hovering foot aims this far below where it is
+  double support_margin = 0.03;       // m, the com target kept this far inside the support polygon
+  double shift_margin = 0.03;         // m, a weight shift's target inside the stance foot (lift-off gate)
+  double max_com_speed = 1.0;         // m/s, the desired com velocity's bound
+  double swing_weight = 1000.0;       // per kg of foot, a swing foot's ankle task (10: landed 10-16 cm off)
+  double max_swing_speed = 3.0;       // m/s, the swing foot's feed-forward velocity bound
+  double max_com_acc = 6.0;           // m/s^2, the desired com acceleration's bound
+  double stance_drop = 0.04;          // m, the desired root this much below the clip's (knees bent deeper)
+};
+
+// The controller's state and workspace (inputs rebuilt every tick, capacity kept).
+struct QpBalance {
+  eng::control::BalanceQpInput in;
+  eng::control::BalanceQpParams params;  // prices and the root assist's limit (world.cpp, per tick the limit)
+  eng::control::BalanceQp ws;
+  eng::control::BalanceQpResult out;
+  Eigen::Vector3d com_d_rel_last = Eigen::Vector3d::Zero();  // desired com - desired support centre, last tick
+  bool have_com_d = false;
+  int support_set = 0;  // which feet were planted last tick (bit 0 left, bit 1 right)
+  bool swing_prev[2] = {false, false};  // the foot was swinging last tick (swing feed-forward)
+  Eigen::Vector3d swing_target_prev[2] = {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
+  std::vector<Eigen::Vector2d> pts, hull;  // scratch: contact points on the floor, their hull
+};
+
+inline void adjust_desired(QpBalance&, BalanceTick&) {}  // the QP plans the com itself
+// After the servo's targets: the QP's inputs built, solved, its torques written to d.tau.
+void actuate(QpBalance& q, BalanceTick& t);
+inline double stance_rise(const QpBalance&, const Boxer&) { return 0.0; }  // the rear leg bends up instead
+double stance_drop(const QpBalance&, const Boxer& b);
+inline constexpr bool plans_steps(const QpBalance&) { return true; }     // lift-off gate and step planner
+inline constexpr bool model_springs(const QpBalance&) { return false; }  // the QP writes every joint torque
+
+}  // namespace boxing

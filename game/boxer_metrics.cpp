@@ -1,0 +1,107 @@
+// The boxer's measurements (report metrics: observe only) and its state machine's update after each step.
+#include <algorithm>
+#include <cmath>
+
+#include "engine/control/servo/orientation_error.h"
+#include "engine/control/servo/world_pose.h"
+#include "engine/physics/dynamics.h"
+#include "game/boxer.h"
+
+namespace boxing {
+
+using eng::control::pose_fk;
+
+void boxer_sense_contacts(const eng::physics::Data& d, Boxer& b) {
+  eng::control::find_foot_contacts(d.contacts, b.bodies.body, b.bones, b.settings.tuning.contact, b.ctl.contacts);
+}
+
+void boxer_measure(const eng::physics::Model& m, const eng::physics::Data& d, const eng::assets::CharacterDesc& desc,
+                   Boxer& b, double dt) {
+  BoxerMetrics& mt = b.metrics;
+  const auto& skel = desc.skeleton;
+  const int n = skel.size();
+  const int pelvis = b.bodies.body[0];
+  const double support = std::min(b.stance.lead_top, b.stance.rear_top);
+  if (mt.err_sq_sum.empty()) mt.err_sq_sum.assign(n, 0.0);
+  // Tracking error in world orientation, against the desired pose lifted with the desired root.
+  eng::control::lift_to_world(skel, b.desired.pose, b.desired.pose.rotation[0], b.scratch.W_d_metric);
+  if (mt.err_sq_upright.empty()) mt.err_sq_upright.assign(n, 0.0);
+  for (int i = 0; i < n; ++i) {
+    const Eigen::Quaterniond Wa(d.x[b.bodies.body[i]].R);
+    const double e2 = eng::control::orientation_error(b.scratch.W_d_metric[i], Wa).squaredNorm();
+    mt.err_sq_sum[i] += e2;
+    if (!mt.fell) mt.err_sq_upright[i] += e2;
+  }
+  ++mt.samples;
+  if (!mt.fell) ++mt.samples_upright;
+
+  if (!mt.fell) {
+    const double t = b.ctl.root_torque.norm();
+    mt.root_torque_sq_dt += t * t * dt;
+    mt.root_torque_peak = std::max(mt.root_torque_peak, t);
+    if (b.settings.root_params.enabled && t >= 0.999 * b.settings.root_params.max_torque) mt.root_saturated_time += dt;
+  }
+  const Eigen::Vector3d com = eng::physics::subtree_com(m, d, pelvis);
+  if (mt.have_com) mt.max_com_speed = std::max(mt.max_com_speed, (com - mt.last_com).norm() / dt);
+  mt.last_com = com;
+  mt.have_com = true;
+
+
+  {  // diagnostic trace
+    const int* feet = b.bones.foot;
+    if (mt.samples == 1)
+      for (int k = 0; k < 2; ++k) mt.foot0[k] = d.x[b.bodies.body[feet[k]]].p;
+    const long every = std::lround(0.05 / dt);
+    const bool fall_now = mt.fell && !mt.traced_fall;
+    if ((d.time < 4.0 && mt.samples % every == 0) || fall_now) {
+      if (fall_now) mt.traced_fall = true;
+      std::vector<Eigen::Quaterniond> Wd;
+      std::vector<Eigen::Vector3d> Pd;
+      pose_fk(skel, b.desired.pose, Wd, Pd);
+      std::array<double, 12> r{};
+      r[0] = d.time;
+      Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+      double fz = 0;
+      Eigen::Vector3d cop = Eigen::Vector3d::Zero();
+      for (int k = 0; k < 2; ++k) {
+        const int fb = b.bodies.body[feet[k]];
+        const Eigen::Matrix3d R = d.x[fb].R;
+        const Eigen::Vector3d fa = R.col(0), fd = Wd[feet[k]] * Eigen::Vector3d::UnitX();
+        r[1 + k] = std::remainder(std::atan2(fa.y(), fa.x()) - std::atan2(fd.y(), fd.x()), 2 * M_PI) * 180 / M_PI;
+        r[3 + k] = std::acos(std::clamp((R * Eigen::Vector3d::UnitZ()).z(), -1.0, 1.0)) * 180 / M_PI;
+        // rear (right) foot: sole normal's lean forward / left (heading frame, deg) in the slip columns
+        const Eigen::Vector2d up = Eigen::Rotation2Dd(-b.stance.heading) * (R * Eigen::Vector3d::UnitZ()).head<2>();
+        if (k == 1) r[5] = std::asin(std::clamp(up.x(), -1.0, 1.0)) * 180 / M_PI, r[6] = std::asin(std::clamp(up.y(), -1.0, 1.0)) * 180 / M_PI;
+        centre += 0.5 * (d.x[fb].p + R * Eigen::Vector3d(0.05, 0, 0));
+        for (const auto& c : d.contacts) {
+          const double f = c.body_b == fb ? c.force.z() : (c.body_a == fb ? -c.force.z() : 0.0);
+          if (f == 0.0) continue;
+          cop += f * c.point.position;
+          fz += f;
+        }
+      }
+      const Eigen::Rotation2Dd toh(-b.stance.heading);
+      const Eigen::Vector2d ce = toh * (com - centre).head<2>();
+      r[7] = ce.x(), r[8] = ce.y();
+      if (fz > 1e-6) {
+        const Eigen::Vector2d cp = toh * (cop / fz - centre).head<2>();
+        r[9] = cp.x(), r[10] = cp.y();
+      }
+      r[11] = d.x[pelvis].p.z() - support;
+      mt.trace.push_back(r);
+    }
+  }
+  // The state machine (a fall: pelvis below half its standing height above the support, or a link other than feet
+  // and shanks on the crates or floor for more than 0.2 s), then the metrics record what it decided.
+  const bool went_down = boxer_state_update(b.ctl.state, b.settings.tuning.fall, d.x[pelvis].p.z() - support,
+                                            b.ctl.contacts.other_link_on_ground, d.time, dt);
+  if (went_down) {
+    mt.fell = true;
+    mt.fell_reason = b.ctl.state.reason;
+    mt.fell_at = d.time, mt.fell_pelvis = d.x[pelvis].p;
+  } else if (!mt.fell) {
+    mt.time_upright += dt;
+  }
+}
+
+}  // namespace boxing

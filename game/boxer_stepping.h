@@ -1,0 +1,22 @@
+#pragma once
+// The boxer's steps (balance QP, BalanceController's plans_steps): stages of boxer_control, in this order each tick.
+#include "engine/assets/character.h"
+#include "engine/physics/data.h"
+#include "engine/physics/model.h"
+#include "game/arena.h"
+
+namespace boxing {
+
+struct Boxer;
+
+// The clip's floor: the lower of the crate tops under the two feet where they actually are, low-passed
+// (StanceTuning::base_tau): b.ctl.support_base.
+void update_support_base(const eng::physics::Data& d, const Arena& arena, Boxer& b, double dt);
+// Lift-off gating (lift_off_gate.h): clears swing[k] for a foot held down; counts steps taken / skipped.
+void gate_lift_off(const eng::physics::Model& m, const eng::physics::Data& d, const eng::assets::CharacterDesc& desc,
+                   Boxer& b, bool swing[2], double dt);
+// The step planner (step_planner.h) on the placed desired pose: b.ctl.step.
+void plan_steps(const eng::physics::Data& d, const eng::assets::CharacterDesc& desc, const Arena& arena, Boxer& b,
+                const bool swing[2], double dt);
+
+}  // namespace boxing

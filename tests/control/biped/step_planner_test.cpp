@@ -1,0 +1,109 @@
+// The step planner: the clip's touch-down found by looking ahead, a landing on flat ground is the clip's own, a
+// landing across a crate seam moves to the foothold the search finds.
+#include "engine/control/biped/step_planner.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "control/biped/boxes.h"
+
+using namespace eng::control;
+using V2 = Eigen::Vector2d;
+using V3 = Eigen::Vector3d;
+
+namespace {
+// A root and a foot bone at the root (offset 0): the foot's ankle is the root position.
+eng::anim::Skeleton foot_skeleton() {
+  eng::anim::Skeleton s;
+  s.name = {"root", "foot"};
+  s.parent = {-1, 0};
+  s.offset = {V3::Zero(), V3::Zero()};
+  return s;
+}
+eng::anim::Pose pose_at(const V3& ankle, double yaw) {
+  eng::anim::Pose p;
+  p.root_position = ankle;
+  p.rotation = {Eigen::Quaterniond(Eigen::AngleAxisd(yaw, V3::UnitZ())), Eigen::Quaterniond::Identity()};
+  return p;
+}
+}  // namespace
+
+TEST(StepPlanner, TouchDownIsTheFirstLookAheadFrameWhoseSoleIsBackWithinTheLift) {
+  // The ankle comes down at 0.5 m/s from 0.2 m and moves forward at 1 m/s; the sole is 0.08 below the ankle, so
+  // the sole gap is 0.12 - 0.5 t and reaches the lift 0.015 at t = 0.21 s: the first 60 Hz frame is 13/60 s.
+  const eng::anim::Skeleton s = foot_skeleton();
+  const auto preview = [](double t) { return pose_at(V3(1.0 * t, 0.0, 0.2 - 0.5 * t), 0.3); };
+  std::vector<Eigen::Quaterniond> W;
+  std::vector<V3> P;
+  const Touchdown td = find_touchdown(s, preview, 1, FootGeometry{}, StepTuning{}, W, P);
+  EXPECT_NEAR(td.ahead, 13.0 / 60.0, 1e-15);
+  EXPECT_NEAR(td.travel.x(), 13.0 / 60.0, 1e-12);
+  EXPECT_NEAR(td.travel.y(), 0.0, 1e-12);
+  EXPECT_NEAR(td.yaw, 0.3, 1e-12);
+}
+
+TEST(StepPlanner, ALandingOnFlatGroundIsTheClipsLanding) {
+  const control_test::Boxes floor;  // no boxes: the floor at z = 0 everywhere
+  const GroundHeight ground = floor.ground();
+  Touchdown td;
+  td.ahead = 0.25;
+  td.travel = V2(0.3, 0.0);  // clip frame: 30 cm forward
+  const double heading = M_PI / 2;  // placed facing +Y
+  const V3 ankle(1.0, 2.0, 0.1);
+  StepPlan st;
+  const double dt = 1.0 / 240;
+  start_step(st, td, ankle, heading, V3(1.05, 2.0, 0.0), ground, FootGeometry{}, StepTuning{}, dt);
+  EXPECT_TRUE(st.active);
+  EXPECT_EQ(st.shift, V2::Zero());
+  EXPECT_NEAR(st.landing.x(), 1.0, 1e-12);
+  EXPECT_NEAR(st.landing.y(), 2.3, 1e-12);  // the clip's travel turned by the heading
+  EXPECT_FALSE(st.step_up);
+  EXPECT_DOUBLE_EQ(st.duration, 0.25);
+  // Mid-swing the target is the clip's own ankle (no shift to ease in), pressed swing_press below it.
+  const Eigen::Quaterniond yaw(Eigen::AngleAxisd(heading, V3::UnitZ()));
+  advance_step(st, ankle, yaw, ground, FootGeometry{}, StepTuning{}, dt);
+  EXPECT_NEAR(st.target.x(), ankle.x(), 1e-15);
+  EXPECT_NEAR(st.target.y(), ankle.y(), 1e-15);
+  EXPECT_NEAR(st.target.z(), 0.1 - StepTuning{}.swing_press, 1e-15);
+  EXPECT_NEAR(st.clip_z, 0.1, 1e-15);
+}
+
+TEST(StepPlanner, ALandingAcrossACrateSeamMovesToTheFoothold) {
+  const control_test::Boxes crates = control_test::two_crates();  // low top 0.30 at x < 0, high 0.40 at x > 0
+  const GroundHeight ground = crates.ground();
+  Touchdown td;
+  td.ahead = 0.2;
+  td.travel = V2(0.2, 0.0);
+  const V3 ankle(-0.30, 0.0, 0.40);  // the clip lands the ankle at x = -0.10: the toe on the high crate
+  StepPlan st;
+  const double dt = 0.01;
+  const StepTuning t;
+  start_step(st, td, ankle, 0.0, V3(-0.25, 0.0, 0.3), ground, FootGeometry{}, t, dt);
+  const Foothold f = find_foothold(ground, V2(-0.10, 0.0), 0.0, 0.0, t.foothold);
+  ASSERT_TRUE(f.found);
+  EXPECT_NEAR(f.shift.x(), -0.08, 1e-9);  // (tests/control/biped/foothold_test.cpp: the same seam)
+  EXPECT_EQ(st.shift, f.shift);
+  EXPECT_FALSE(st.step_up);  // it lands back on the low crate
+  // The shift is eased in: none at the start, all of it at the clip's touch-down (3 u^2 - 2 u^3).
+  advance_step(st, ankle, Eigen::Quaterniond::Identity(), ground, FootGeometry{}, t, dt);
+  const double u = 0.05;
+  EXPECT_NEAR(st.target.x(), ankle.x() + (3 * u * u - 2 * u * u * u) * f.shift.x(), 1e-12);
+  for (int i = 1; i < 20; ++i) advance_step(st, ankle, Eigen::Quaterniond::Identity(), ground, FootGeometry{}, t, dt);
+  EXPECT_NEAR(st.target.x(), ankle.x() + f.shift.x(), 1e-12);
+  // Height: the clip's ankle over its top (0.40 - 0.30), over the highest top under the foot's middle and the landing.
+  EXPECT_NEAR(st.clip_z, 0.10, 1e-12);
+  EXPECT_NEAR(st.target.z(), 0.10 + 0.30 - t.swing_press, 1e-12);
+}
+
+TEST(StepPlanner, ALandingOnAHigherCrateIsAStepUpWithoutThePress) {
+  const control_test::Boxes crates = control_test::two_crates();
+  const GroundHeight ground = crates.ground();
+  Touchdown td;
+  td.ahead = 0.2;
+  td.travel = V2(0.5, 0.0);  // from the low crate's middle onto the high crate's middle
+  StepPlan st;
+  start_step(st, td, V3(-0.30, 0.0, 0.40), 0.0, V3(-0.25, 0.0, 0.3), ground, FootGeometry{}, StepTuning{}, 0.01);
+  EXPECT_EQ(st.shift, V2::Zero());
+  EXPECT_TRUE(st.step_up);
+}
