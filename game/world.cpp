@@ -225,8 +225,10 @@ void step_world(World& w) {
   using clock = std::chrono::steady_clock;
   const auto t0 = clock::now();
   eng::physics::clear_applied(w.data);
-  // step() leaves d.x at the START of the last step: bring the kinematics to the current q for the servos.
-  eng::physics::forward_kinematics(w.model, w.data);
+  // The step's first half (kinematics, contacts, rows, the mass matrix and c(q, v)) once, for the physics and for
+  // every boxer's control: the balance QPs read their blocks of d.M_crba and d.qfrc_bias (MuJoCo's mj_step1 /
+  // mj_step2 split). Control then writes torques, spring references and forces for the second half.
+  eng::physics::step1(w.model, w.data);
   for (Boxer& b : w.boxers) boxer_control(w.model, w.data, w.boxer_desc, w.arena, b, kPhysicsDt);
 
   // The scenario's forces (the push scenario's chest push).
@@ -234,13 +236,22 @@ void step_world(World& w) {
   w.push_active = false;
   if (scenario.before_step) scenario.before_step(w);
 
-  eng::physics::step(w.model, w.data);
+  eng::physics::step2(w.model, w.data);
   for (Boxer& b : w.boxers) boxer_sense_contacts(w.data, b);
   for (Boxer& b : w.boxers) boxer_measure(w.model, w.data, w.boxer_desc, b, kPhysicsDt);
   if (scenario.after_step) scenario.after_step(w);
   ++w.steps;
   w.physics_ms_total += std::chrono::duration<double, std::milli>(clock::now() - t0).count();
 }
+
+namespace {
+// The balance QP's solve cost (wall clock, this machine): median and 95th percentile per boxer; null with PD.
+nlohmann::json qp_report(const Boxer& b) {
+  if (!b.uses_qp()) return nullptr;
+  const eng::core::LatencyHistogram& h = std::get<QpBalance>(b.ctl.balance).solve_us;
+  return {{"solves", h.count()}, {"solve_us_median", h.percentile(50)}, {"solve_us_p95", h.percentile(95)}};
+}
+}  // namespace
 
 nlohmann::json world_report(const World& w) {
   nlohmann::json boxers = nlohmann::json::array();
@@ -272,6 +283,7 @@ nlohmann::json world_report(const World& w) {
                         {"rms_torque_nm", m.time_upright > 0 ? std::sqrt(m.root_torque_sq_dt / m.time_upright) : 0.0},
                         {"peak_torque_nm", m.root_torque_peak},
                         {"saturated_fraction", m.time_upright > 0 ? m.root_saturated_time / m.time_upright : 0.0}}},
+                      {"qp", qp_report(b)},
                       {"rms_tracking_error_rad", err},
                       {"rms_tracking_error_all_bones_rad",
                        m.samples > 0 ? std::sqrt(total / w.boxer_desc.skeleton.size()) : 0.0},

@@ -1,6 +1,8 @@
 // The balance QP controller (qp_balance.h).
 #include "game/balance/qp_balance.h"
 
+#include <chrono>
+
 #include <algorithm>
 #include <cmath>
 
@@ -69,7 +71,9 @@ void actuate(QpBalance& q, BalanceTick& tick) {
   // Contacts of the planted feet. A foot is held (planted) only while it actually touches (FootContacts::on_ground):
   // a foot the clip plants but that hovers a little above its crate is lowered onto it instead (below).
   const bool touching[2] = {loaded[0] && b.ctl.contacts.on_ground[0], loaded[1] && b.ctl.contacts.on_ground[1]};
-  for (const auto& c : d.contacts) {
+  // The contacts of the last solve (the ones FootContacts was sensed from; after step1, d.prev_contacts: this
+  // step's contacts are found but not solved yet).
+  for (const auto& c : d.prev_contacts) {
     if (c.point.depth < -tq.touch_gap) continue;  // speculative, not touching
     if (c.body_a != 0 && c.body_b != 0) continue;  // only the crates and floor (static) carry the body
     const int body = c.body_a == 0 ? c.body_b : c.body_a;
@@ -186,7 +190,10 @@ void actuate(QpBalance& q, BalanceTick& tick) {
     }
   }
   for (int k = 0; k < 2; ++k) q.swing_prev[k] = !loaded[k] && !touching[k];
+  // The solve's wall-clock cost, for the report only (boxers[i].qp.solve_us_median / p95); nothing reads it back.
+  const auto t0 = std::chrono::steady_clock::now();
   eng::control::balance_qp_solve(m, d, in, q.params, q.ws, q.out);
+  q.solve_us.record(std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count());
   // A non-finite solve (never seen standing; a guard) leaves the joints limp for the tick instead of poisoning the
   // whole simulation.
   const bool finite = q.out.tau.allFinite();

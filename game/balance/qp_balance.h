@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "engine/control/balance/balance_qp.h"
+#include "engine/core/latency_histogram.h"
 
 namespace boxing {
 
@@ -42,6 +43,7 @@ struct QpBalance {
   bool swing_prev[2] = {false, false};  // the foot was swinging last tick (swing feed-forward)
   Eigen::Vector3d swing_target_prev[2] = {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
   std::vector<Eigen::Vector2d> pts, hull;  // scratch: contact points on the floor, their hull
+  eng::core::LatencyHistogram solve_us;    // wall-clock cost of each solve (report only)
 };
 
 inline void adjust_desired(QpBalance&, BalanceTick&) {}  // the QP plans the com itself

@@ -187,11 +187,10 @@ void balance_qp_solve(const physics::Model& m, const physics::Data& d, const Bal
   }
   com /= mass;
 
-  ws.M_full.resize(m.nv, m.nv);
-  ws.c_full.resize(m.nv);
-  physics::crba(m, d, ws.M_full);
-  physics::bias_forces(m, d, ws.c_full);
-  const auto M = ws.M_full.block(b0, b0, n, n);
+  // M and c(q, v) of the articulation: its blocks of what the step's first half built (step1: d.M_crba,
+  // d.qfrc_bias), once per tick for the physics and every boxer.
+  const auto M = d.M_crba.block(b0, b0, n, n);
+  const VecX& c_full = d.qfrc_bias;
 
   // ---- The tracking objective over qacc: 1/2 qacc^T H qacc - g^T qacc ----
   ws.H.setZero(n, n);
@@ -267,7 +266,7 @@ void balance_qp_solve(const physics::Model& m, const physics::Data& d, const Bal
   Eigen::Matrix<double, 6, 1> c_root;
   for (int k = 0; k < 6; ++k) {
     const int dof = b0 + k;
-    c_root[k] = ws.c_full[dof] + m.bodies[m.dof_body[dof]].damping * d.v[dof];
+    c_root[k] = c_full[dof] + m.bodies[m.dof_body[dof]].damping * d.v[dof];
   }
   // Solved by the range-space (Schur complement) method (Nocedal & Wright sec. 16.2), H being positive definite
   // (the qacc ridge): with Y = H^-1 E^T and S = E Y (6 x 6, positive definite: E has full row rank),
@@ -328,7 +327,7 @@ void balance_qp_solve(const physics::Model& m, const physics::Data& d, const Bal
         const int dof = b0 + 6 + k;
         const auto& body = m.bodies[m.dof_body[dof]];
         ws.T1.row(k) += body.armature * Q1.row(6 + k);
-        ws.t0[k] += body.armature * q0[6 + k] + ws.c_full[dof] + body.damping * d.v[dof];
+        ws.t0[k] += body.armature * q0[6 + k] + c_full[dof] + body.damping * d.v[dof];
       }
       ws.Q.noalias() += p.w_torque * ws.T1.transpose() * ws.T1;
       ws.q.noalias() -= p.w_torque * ws.T1.transpose() * ws.t0;
@@ -394,7 +393,7 @@ void balance_qp_solve(const physics::Model& m, const physics::Data& d, const Bal
   for (int k = 0; k < n; ++k) {
     const int dof = b0 + k;
     const auto& body = m.bodies[m.dof_body[dof]];
-    out.tau[k] += body.armature * out.qacc[k] + ws.c_full[dof] + body.damping * d.v[dof];
+    out.tau[k] += body.armature * out.qacc[k] + c_full[dof] + body.damping * d.v[dof];
   }
   // The root rows are the assist's generalised force (J_root^T [tau_a; 0]), zero when off; after a clamp the root
   // gets the clamped torque and the body falls short of qacc there.

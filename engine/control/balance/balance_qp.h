@@ -127,8 +127,6 @@ using QpVecK = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kQpMaxUnknowns, 1>;
 using QpVecN = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kQpMaxDofs, 1>;
 
 struct BalanceQp {
-  MatX M_full;   // the whole model's M (same size every call)
-  VecX c_full;
   QpMat6N J;     // a task's Jacobian, compacted to its columns
   QpMatNN H;
   QpMat6K A;     // the pyramid edges' wrench about the com
@@ -162,6 +160,8 @@ struct BalanceQp {
   }
 };
 
+// Reads the articulation's blocks of d.M_crba and d.qfrc_bias: call it between physics::step1 and step2 (or after
+// physics::mass_matrix + compute_bias at the current state), with the kinematics of the current q, v.
 void balance_qp_solve(const physics::Model& m, const physics::Data& d, const BalanceQpInput& in,
                       const BalanceQpParams& p, BalanceQp& ws, BalanceQpResult& out);
 

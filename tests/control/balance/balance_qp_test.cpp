@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "engine/physics/dynamics.h"
+#include "engine/physics/step.h"
 #include "physics/physics_test_util.h"
 
 using namespace eng::physics;
@@ -19,6 +20,14 @@ using eng::control::BalanceQpParams;
 using eng::control::BalanceQpResult;
 
 namespace {
+// What balance_qp_solve reads: the kinematics of the current q, v and the step's first half's M and c there
+// (physics::step1 builds the same, with contacts and rows).
+void kinematics_and_dynamics(const Model& m, Data& d) {
+  forward_kinematics(m, d);
+  mass_matrix(m, d);
+  compute_bias(m, d);
+}
+
 // A 10 kg box "torso" (free, 0.2 x 0.2 x 0.1 m) standing on the floor, with a 2 kg "arm" hinged about y at the
 // middle of its top face, pointing along +x (com 0.2 m out). Contacts: the four bottom corners.
 struct Stand {
@@ -35,7 +44,7 @@ struct Stand {
     m.finalize();
     d = make_data(m);
     d.q[m.bodies[arm].q_index] = arm_angle;
-    forward_kinematics(m, d);
+    kinematics_and_dynamics(m, d);
     in.dof_begin = 0;
     in.dof_end = m.nv;
     in.root_body = torso;
@@ -94,7 +103,7 @@ TEST(BalanceQp, TorquesAndPlannedContactForcesReproduceTheQaccUnderAba) {
   Stand s(0.4);
   // A moving state and tasks the contacts cannot all satisfy.
   for (int k = 0; k < s.m.nv; ++k) s.d.v[k] = 0.1 * std::sin(1.0 + 2.3 * k);
-  forward_kinematics(s.m, s.d);
+  kinematics_and_dynamics(s.m, s.d);
   s.in.angular[1].alpha = Vec3(0, -8.0, 0);
   s.in.com_acc = Vec3(0.5, -0.3, 0.2);
   BalanceQp ws;
@@ -128,7 +137,7 @@ TEST(BalanceQp, BiasAccelerationsMatchFiniteDifferencesOfTheVelocity) {
   // Jdot v of a point on the arm: d/dt (J v) at qacc = 0, by a small explicit step of the kinematics.
   Stand s(0.3);
   for (int k = 0; k < s.m.nv; ++k) s.d.v[k] = 0.7 * std::cos(0.5 + 1.7 * k);
-  forward_kinematics(s.m, s.d);
+  kinematics_and_dynamics(s.m, s.d);
   const Vec3 local(0.35, 0.02, 0.01);
   auto point_and_velocity = [&](const Data& d, Vec3& p, Vec3& v, Vec3& w) {
     p = d.x[s.arm].apply(local);
@@ -147,7 +156,7 @@ TEST(BalanceQp, BiasAccelerationsMatchFiniteDifferencesOfTheVelocity) {
   const Quat q0 = quat_from(s.d.q.data() + tb.q_index + 3);
   quat_store((q0 * quat_exp(h * s.d.v.segment<3>(tb.v_index + 3))).normalized(), d2.q.data() + tb.q_index + 3);
   d2.q[s.m.bodies[s.arm].q_index] += h * s.d.v[s.m.bodies[s.arm].v_index];
-  forward_kinematics(s.m, d2);
+  kinematics_and_dynamics(s.m, d2);
   Vec3 p1, v1, w1;
   point_and_velocity(d2, p1, v1, w1);
   EXPECT_LT(((v1 - v0) / h - a_bias).norm(), 1e-4 * (1.0 + a_bias.norm()));
@@ -194,7 +203,7 @@ TEST(BalanceQp, RootAssistHoldsAComOutsideTheSupportWithTheClosedFormTorqueAndWi
 TEST(BalanceQp, PricedTorquesStillHoldTheArmAndMeetTheDynamics) {
   Stand s(0.4);
   for (int k = 0; k < s.m.nv; ++k) s.d.v[k] = 0.1 * std::sin(1.0 + 2.3 * k);
-  forward_kinematics(s.m, s.d);
+  kinematics_and_dynamics(s.m, s.d);
   BalanceQp ws;
   BalanceQpResult free_tau, priced;
   eng::control::balance_qp_solve(s.m, s.d, s.in, BalanceQpParams{}, ws, free_tau);
