@@ -119,7 +119,7 @@ void actuate(QpBalance& q, BalanceTick& tick) {
     if (!in.contacts.empty()) {
       q.pts.clear();
       for (const auto& c : in.contacts) q.pts.push_back(c.point.head<2>());
-      eng::control::convex_hull_2d(q.pts, q.hull);
+      eng::control::convex_hull_2d_in_place(q.pts, q.hull);
       Eigen::Vector2d target = eng::control::clamp_to_polygon(q.hull, com_a.head<2>() - e.head<2>(), tq.support_margin);
       // A step held for its weight shift (gate_lift_off): the target goes over the other foot's contacts.
       for (int k = 0; k < 2; ++k) {
@@ -129,7 +129,7 @@ void actuate(QpBalance& q, BalanceTick& tick) {
         for (const auto& c : in.contacts)
           if (c.body == other) q.pts.push_back(c.point.head<2>());
         if (q.pts.empty()) continue;
-        eng::control::convex_hull_2d(q.pts, q.hull);
+        eng::control::convex_hull_2d_in_place(q.pts, q.hull);
         target = eng::control::clamp_to_polygon(q.hull, target, tq.shift_margin);
       }
       e.head<2>() = com_a.head<2>() - target;

@@ -38,8 +38,9 @@ void solve_leg(const anim::Skeleton& skel, const LegBones& L, const std::vector<
 void fit_legs_to_ground(const anim::Skeleton& skel, const LegBones legs[2], double base_top,
                         GroundHeight ground, anim::Pose& pose,
                         const Eigen::Vector3d& foot_centre) {
-  std::vector<Eigen::Quaterniond> W;
-  std::vector<Eigen::Vector3d> P;
+  // Scratch for the pose's forward kinematics, kept between calls (no allocation per tick).
+  thread_local std::vector<Eigen::Quaterniond> W;
+  thread_local std::vector<Eigen::Vector3d> P;
   pose_fk(skel, pose, W, P);
   for (int k = 0; k < 2; ++k) {
     const LegBones& L = legs[k];
@@ -53,8 +54,9 @@ void fit_legs_to_ground(const anim::Skeleton& skel, const LegBones legs[2], doub
 
 void fit_legs_to_ankles(const anim::Skeleton& skel, const LegBones legs[2], const Eigen::Vector3d ankles[2],
                         anim::Pose& pose) {
-  std::vector<Eigen::Quaterniond> W;
-  std::vector<Eigen::Vector3d> P;
+  // Scratch for the pose's forward kinematics, kept between calls (no allocation per tick).
+  thread_local std::vector<Eigen::Quaterniond> W;
+  thread_local std::vector<Eigen::Vector3d> P;
   pose_fk(skel, pose, W, P);
   for (int k = 0; k < 2; ++k) solve_leg(skel, legs[k], W, P, ankles[k], pose);
 }

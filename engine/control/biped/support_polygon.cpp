@@ -19,7 +19,7 @@ Eigen::Vector2d closest_on_segment(const Eigen::Vector2d& a, const Eigen::Vector
 }
 }  // namespace
 
-void convex_hull_2d(std::vector<Eigen::Vector2d> pts, std::vector<Eigen::Vector2d>& hull) {
+void convex_hull_2d_in_place(std::vector<Eigen::Vector2d>& pts, std::vector<Eigen::Vector2d>& hull) {
   std::sort(pts.begin(), pts.end(), [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
     return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
   });
@@ -29,7 +29,9 @@ void convex_hull_2d(std::vector<Eigen::Vector2d> pts, std::vector<Eigen::Vector2
     hull = pts;
     return;
   }
-  std::vector<Eigen::Vector2d> h(2 * pts.size());
+  // Andrew's monotone chain, built in `hull` itself (its capacity is kept between calls: no allocation per tick).
+  std::vector<Eigen::Vector2d>& h = hull;
+  h.resize(2 * pts.size());
   size_t k = 0;
   for (const auto& p : pts) {  // lower hull
     while (k >= 2 && cross(h[k - 2], h[k - 1], p) <= 0.0) --k;
@@ -40,7 +42,12 @@ void convex_hull_2d(std::vector<Eigen::Vector2d> pts, std::vector<Eigen::Vector2
     h[k++] = pts[i];
   }
   h.resize(k - 1);  // the last point repeats the first
-  hull = h;
+}
+
+void convex_hull_2d(const std::vector<Eigen::Vector2d>& pts, std::vector<Eigen::Vector2d>& hull) {
+  thread_local std::vector<Eigen::Vector2d> scratch;  // capacity kept: no allocation once warm
+  scratch = pts;
+  convex_hull_2d_in_place(scratch, hull);
 }
 
 Eigen::Vector2d clamp_to_polygon(const std::vector<Eigen::Vector2d>& hull, const Eigen::Vector2d& p, double margin) {
@@ -51,20 +58,20 @@ Eigen::Vector2d clamp_to_polygon(const std::vector<Eigen::Vector2d>& hull, const
   Eigen::Vector2d c = Eigen::Vector2d::Zero();
   for (const auto& v : hull) c += v;
   c /= static_cast<double>(n);
-  // Shrink toward the centroid by `margin`, but never past half the vertex's distance to it.
-  std::vector<Eigen::Vector2d> s(n);
-  for (size_t i = 0; i < n; ++i) {
+  // Shrink toward the centroid by `margin`, but never past half the vertex's distance to it (each shrunk vertex
+  // computed where it is needed: no buffer, no allocation).
+  auto s = [&](size_t i) -> Eigen::Vector2d {
     const Eigen::Vector2d d = hull[i] - c;
     const double len = d.norm();
-    s[i] = len > 0.0 ? Eigen::Vector2d(c + d * std::max(0.5, 1.0 - margin / len)) : c;
-  }
+    return len > 0.0 ? Eigen::Vector2d(c + d * std::max(0.5, 1.0 - margin / len)) : c;
+  };
   bool inside = true;
-  for (size_t i = 0; i < n && inside; ++i) inside = cross(s[i], s[(i + 1) % n], p) >= 0.0;
+  for (size_t i = 0; i < n && inside; ++i) inside = cross(s(i), s((i + 1) % n), p) >= 0.0;
   if (inside) return p;
-  Eigen::Vector2d best = s[0];
+  Eigen::Vector2d best = s(0);
   double best_d2 = INFINITY;
   for (size_t i = 0; i < n; ++i) {
-    const Eigen::Vector2d q = closest_on_segment(s[i], s[(i + 1) % n], p);
+    const Eigen::Vector2d q = closest_on_segment(s(i), s((i + 1) % n), p);
     const double d2 = (q - p).squaredNorm();
     if (d2 < best_d2) best_d2 = d2, best = q;
   }

@@ -10,7 +10,9 @@ namespace eng::control {
 
 // Convex hull of 2-D points, counter-clockwise, collinear points dropped (Andrew's monotone chain).
 // 0, 1 or 2 points come back for degenerate input (empty, one point, a segment).
-void convex_hull_2d(std::vector<Eigen::Vector2d> pts, std::vector<Eigen::Vector2d>& hull);
+void convex_hull_2d(const std::vector<Eigen::Vector2d>& pts, std::vector<Eigen::Vector2d>& hull);
+// The same, sorting and deduplicating `pts` in place (no copy): for a scratch list the caller refills anyway.
+void convex_hull_2d_in_place(std::vector<Eigen::Vector2d>& pts, std::vector<Eigen::Vector2d>& hull);
 
 // The point of the hull shrunk by `margin` (toward its centroid, at most halfway) closest to p; p itself when
 // it is inside. For a segment or a single point: the closest point of it.
