@@ -15,7 +15,7 @@ double Arena::top_at(double x, double y) const {
   return top;
 }
 
-Arena make_arena(uint64_t seed, double min_step) {
+Arena make_arena(uint64_t seed, double min_step, double separation) {
   Rng rng(seed * 0x9E3779B97F4A7C15ull + 17);
   Arena a;
   constexpr int kNx = 6, kNy = 4;  // 3 m x 2 m platform
@@ -26,7 +26,7 @@ Arena make_arena(uint64_t seed, double min_step) {
     for (int j = 0; j < kNy; ++j) height[i][j] = 0.30 + rng.uniform(-0.10, 0.14);
 
   // Boxers face each other along X: boxer 0 at -X facing +X, boxer 1 at +X facing -X.
-  const double sx = 0.5 * kBoxerSeparation;
+  const double sx = 0.5 * separation;
   a.stances[0] = Stance{{-sx, 0.0}, 0.0, 0, 0};
   a.stances[1] = Stance{{sx, 0.0}, M_PI, 0, 0};
   auto cell_of = [&](double x, double y, int& i, int& j) {

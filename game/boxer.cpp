@@ -49,7 +49,7 @@ void place_desired_pose(const eng::assets::CharacterDesc& desc, const Arena& are
   // Balance QP: once the feet have moved (a walk's steps), the crates under the actual feet (boxer_control).
   const double base = steps && b.ctl.have_support_base ? b.ctl.support_base
                                                           : std::min(b.stance.lead_top, b.stance.rear_top) + rise;
-  const Eigen::Quaterniond yaw(Eigen::AngleAxisd(b.stance.heading, Eigen::Vector3d::UnitZ()));
+  const Eigen::Quaterniond yaw(Eigen::AngleAxisd(b.stance.heading + b.ctl.yaw_offset, Eigen::Vector3d::UnitZ()));
   const double drop = std::visit([&b](const auto& c) { return stance_drop(c, b); }, b.ctl.balance);
   out.pose.root_position = Eigen::Vector3d(b.stance.position.x(), b.stance.position.y(), base - drop) +
                            yaw * (out.pose.root_position + Eigen::Vector3d(b.settings.tuning.stance.clip_forward, 0.0, 0.0));
@@ -189,7 +189,7 @@ void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const en
   const auto& skel = desc.skeleton;
   const int n = skel.size();
   read_actual_state(d, b, n);
-  b.desired = b.source.tick(dt, Eigen::Rotation2Dd(-b.stance.heading) * b.ctl.anchor);
+  b.source.tick(dt, Eigen::Rotation2Dd(-b.stance.heading) * b.ctl.anchor, &b.desired);
   bool swing[2];          // the clip has this foot in the air (a step)
   double clip_ankle_h[2];  // the clip's ankle above its sole's lowest end (m), for the tiptoe test
   clip_feet(desc, b, swing, clip_ankle_h);
@@ -197,11 +197,27 @@ void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const en
   if (steps && d.time > 0.0) update_support_base(d, arena, b, dt);
   if (steps && d.time > 0.0) gate_lift_off(m, d, desc, b, swing, dt);
   place_desired_pose(desc, arena, b, b.desired);
+  if (b.ctl.state.state == BoxerState::GettingUp && b.ctl.state.since == d.time && b.settings.tuning.stand_up.realign) {
+    // The stand-up starts where the body lies: the desired motion moved onto the pelvis (the down clip went on as
+    // authored while the body fell where the hit and the crates took it).
+    const Eigen::Vector2d shift = (d.x[b.bodies.body[0]].p - b.desired.pose.root_position).head<2>();
+    b.ctl.anchor += shift;
+    b.desired.pose.root_position.head<2>() += shift;
+  }
+  if (b.ctl.state.state == BoxerState::GettingUp) {
+    // Rising, the boxer makes its way back to its mark (the stance: fighting distance), the root assist guiding it:
+    // the placement's offset decays with a 0.7 s time constant (its steps do not carry it there, see arena.h).
+    const Eigen::Vector2d back = -(1.0 - std::exp(-dt / 0.7)) * b.ctl.anchor;
+    b.ctl.anchor += back;
+    b.desired.pose.root_position.head<2>() += back;
+  }
   if (steps) plan_steps(d, desc, arena, b, swing, dt);
   if (b.limp) return;
   const bool parent_space = b.settings.space == ServoSpace::Parent || b.settings.space == ServoSpace::ParentMeathook;
   bool loaded[2] = {d.time == 0.0, d.time == 0.0};  // placed on the crates: planted at the start
   if (!b.ctl.joints.empty() && !parent_space) fit_support_legs(m, d, desc, b, swing, clip_ankle_h, loaded, dt);
+  // A punch of the match goes for the opponent (game/match/punch_aim.h): its arm bent onto the target.
+  apply_punch_aim(desc, b.ctl.aim, b.desired.pose, b.scratch.fk_W, b.scratch.fk_P);
 
   eng::control::ActualState actual;
   actual.W_a = &b.scratch.W_a;
@@ -216,7 +232,10 @@ void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const en
   // Person space: the heading is the pelvis's, LOW-PASSED (a push's twist does not turn the desired pose), and
   // steered slowly toward facing the opponent: docs/decisions/person-space-heading.md.
   const double heading = servo_heading(b, dt);
-  eng::control::control_step(skel, b.settings.space, b.settings.gains, b.control_body, b.settings.hook, b.desired, heading, dt, actual, b.ctl.servo,
+  // A stunned or knocked-down boxer's servo is weaker (the match's gain_scale; 1 otherwise).
+  eng::control::ServoGains gains = b.settings.gains;
+  gains.omega_n *= b.ctl.gain_scale;
+  eng::control::control_step(skel, b.settings.space, gains, b.control_body, b.settings.hook, b.desired, heading, dt, actual, b.ctl.servo,
                              help);
   // The balance controller writes the torques (QP) or the servo's springs and torques (PD).
   BalanceTick tick{m, d, desc, b, loaded, dt};

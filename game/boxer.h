@@ -27,6 +27,7 @@
 #include "game/boxer_state.h"
 #include "game/boxer_tuning.h"
 #include "game/character_builder.h"
+#include "game/match/punch_aim.h"
 #include "game/pose_source.h"
 
 namespace boxing {
@@ -71,6 +72,7 @@ struct BoxerControlState {
   eng::control::ServoState servo;
   eng::control::RootSpring root_spring;
   Eigen::Vector3d root_torque = Eigen::Vector3d::Zero();  // applied this tick (for the metrics)
+  Eigen::Vector3d root_force = Eigen::Vector3d::Zero();   // the stand-up's root assist force this tick (stand_up.h)
   // World / Person space: eq. 3 as implicit joint springs rooted at the feet (implicit_servo.h). Per skeleton
   // bone: the joint's servo (gains also written into the Model's Body::stiffness/damping at build time).
   std::vector<eng::control::ImplicitServoJoint> joints;
@@ -88,6 +90,13 @@ struct BoxerControlState {
   // clip and touching the crates. A walk that steps, or feet that slip, move the whole desired body with them.
   Eigen::Vector2d anchor = Eigen::Vector2d::Zero();
   BoxerStateMachine state;  // guard / down ... (boxer_state.h): control reads this, never the metrics
+  // The match (game/match/match.h) writes these before control: the punch's aim (punch_aim.h), the servo gains'
+  // scale (lower when stunned or knocked down), where a stand-up started (the pelvis, world).
+  PunchAim aim;
+  double gain_scale = 1.0;
+  Eigen::Vector3d stand_up_from = Eigen::Vector3d::Zero();
+  Eigen::Vector2d mark = Eigen::Vector2d::Zero();  // the match: where the pelvis starts (the referee's reset)
+  double yaw_offset = 0.0;  // rad, added to the stance heading when placing the clip (the reset faces the opponent)
 };
 
 // Per-tick scratch (capacity kept, no allocation once sized).

@@ -95,7 +95,7 @@ void boxer_measure(const eng::physics::Model& m, const eng::physics::Data& d, co
   // and shanks on the crates or floor for more than 0.2 s), then the metrics record what it decided.
   const bool went_down = boxer_state_update(b.ctl.state, b.settings.tuning.fall, d.x[pelvis].p.z() - support,
                                             b.ctl.contacts.other_link_on_ground, d.time, dt);
-  if (went_down) {
+  if (went_down && !mt.fell) {  // the first fall (a match boxer may go down again after getting up)
     mt.fell = true;
     mt.fell_reason = b.ctl.state.reason;
     mt.fell_at = d.time, mt.fell_pelvis = d.x[pelvis].p;

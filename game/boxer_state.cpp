@@ -13,11 +13,17 @@ const char* boxer_state_name(BoxerState s) {
   return "?";
 }
 
+void boxer_state_enter(BoxerStateMachine& s, BoxerState to, double time, const char* reason) {
+  s.state = to;
+  s.since = time;
+  s.reason = reason;
+}
+
 bool boxer_state_update(BoxerStateMachine& s, const FallTuning& t, double pelvis_height, bool other_link_on_ground,
                         double time, double dt) {
   if (!s.have_standing_height) s.standing_height = pelvis_height, s.have_standing_height = true;
   s.ground_contact_time = other_link_on_ground ? s.ground_contact_time + dt : 0.0;
-  if (s.state != BoxerState::Guard) return false;
+  if (s.state == BoxerState::Down || s.state == BoxerState::GettingUp) return false;
   const char* reason = nullptr;
   if (pelvis_height < t.low_pelvis * s.standing_height)
     reason = "pelvis below half its standing height";

@@ -2,10 +2,11 @@
 // The boxer's state machine. Control reads the STATE (a fallen QP boxer goes limp, its feet stop anchoring the clip,
 // its steps stop being gated); the report's metrics only observe it.
 //
-//   Guard ──fall detected──> Down
-//
-// Stunned, Falling and GettingUp are the match's states (a knock-out's wobble, the fall itself, the stand-up); no
-// transition reaches them yet.
+//   Guard <──consciousness──> Stunned          (the match: game/match/match.h)
+//   Guard / Stunned ──fall detected──> Down     (a fall the match did not call: reported as a fall without a hit
+//                                                unless a punch landed in the 1.5 s before)
+//   Guard / Stunned ──knockdown──> Falling ──fall detected──> Down   (the match: a heavy hit)
+//   Down ──lying still──> GettingUp ──up in guard──> Guard           (the match: the count and the stand-up)
 #include <string>
 
 namespace boxing {
@@ -31,7 +32,10 @@ struct BoxerStateMachine {
 };
 
 // One update after a physics step: pelvis_height = the pelvis above the stance's lower crate (m), other_link_on_ground
-// = FootContacts::other_link_on_ground. True on the tick the boxer goes down.
+// = FootContacts::other_link_on_ground. True on the tick the boxer goes down (from Guard, Stunned or Falling).
+// The match's transitions (no detection): enter `to` now, for `reason`.
+void boxer_state_enter(BoxerStateMachine& s, BoxerState to, double time, const char* reason);
+
 bool boxer_state_update(BoxerStateMachine& s, const FallTuning& t, double pelvis_height, bool other_link_on_ground,
                         double time, double dt);
 

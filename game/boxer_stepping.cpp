@@ -33,7 +33,7 @@ void update_support_base(const eng::physics::Data& d, const Arena& arena, Boxer&
 // Where and when the clip puts foot k down again (step_planner.h), from the pose source's preview.
 namespace {
 eng::control::Touchdown touchdown_of(const eng::anim::Skeleton& skel, Boxer& b, int k) {
-  const auto preview = [&b](double ahead) { return b.source.preview(ahead); };
+  const auto preview = [&b](double ahead) -> const eng::anim::Pose& { return b.source.preview(ahead); };
   return eng::control::find_touchdown(skel, preview, b.bones.foot[k], b.settings.tuning.foot, b.settings.tuning.step, b.scratch.fk_W, b.scratch.fk_P);
 }
 

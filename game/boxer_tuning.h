@@ -8,6 +8,7 @@
 #include "engine/control/biped/step_planner.h"
 #include "game/balance/pd_balance.h"
 #include "game/balance/qp_balance.h"
+#include "game/balance/stand_up.h"
 #include "game/boxer_state.h"
 
 namespace boxing {
@@ -55,6 +56,7 @@ struct BoxerTuning {
   FallTuning fall;
   ServoSetupTuning servo;
   RootTuning root;
+  StandUpTuning stand_up;
 };
 
 }  // namespace boxing

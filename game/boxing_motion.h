@@ -8,12 +8,16 @@
 //  * fall and reaction clips get the knockdown edges from guard, so pruning keeps them reachable;
 //  * guard is the home clip: walks start there and a non-looping clip without extras.next returns to it.
 #include "engine/anim/motion_graph.h"
+#include "engine/control/biped/biped_bones.h"
 #include "engine/anim/skeleton.h"
 
 namespace boxing {
 
 // The home clip of every boxing walk.
 inline constexpr const char* kGuardClip = "guard";
+
+// The boxer's leg bones as content/boxer/boxer.gltf names them ([0] left, the orthodox lead; [1] right).
+inline constexpr eng::control::BipedBoneNames kBoxerLegs{{"thigh_l", "thigh_r"}, {"shank_l", "shank_r"}, {"foot_l", "foot_r"}};
 
 // The boxing graph options for this skeleton (feature points on bones it lacks are left out).
 eng::anim::MotionGraphOptions boxing_graph_options(const eng::anim::Skeleton& skeleton);

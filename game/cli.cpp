@@ -70,6 +70,8 @@ flags:
   --push-force N         push scenario: force in newtons
   --push-duration S      push scenario: duration (default 0.1)
   --push-at S            push scenario: start time (default 2)
+  --round-seconds S      match: a round's length (default 180)
+  --player 0|1           match: the keyboard steers that boxer, the AI the other (default: both AI)
   --clip NAME            stand / push: guard, and the clip NAME played once every 3 s (a drill of one clip)
   --servo-wn W           servo natural frequency omega_n, rad/s (default 15)
   --servo-zeta Z         servo damping ratio (default 1)
@@ -178,6 +180,16 @@ eng::Result<Options> parse_cli(const std::vector<std::string>& args) {
       } else {
         o.frames_dir = *v;
       }
+    } else if (flag == "--round-seconds") {
+      auto v = value();
+      if (!v) return missing();
+      if (!parse_double(*v, 1.0, 86400.0, o.round_seconds))
+        return bad("--round-seconds must be a number from 1 to 86400, got '" + *v + "'");
+    } else if (flag == "--player") {
+      auto v = value();
+      if (!v) return missing();
+      if (*v != "0" && *v != "1") return bad("--player must be 0 or 1, got '" + *v + "'");
+      o.player = *v == "0" ? 0 : 1;
     } else if (flag == "--render-every") {
       auto v = value();
       if (!v) return missing();

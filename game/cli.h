@@ -52,6 +52,9 @@ struct Options {
   std::string balance = "qp";
   double contact_gap = -1.0;          // m, < 0: each foot-contact purpose its own gap (FootContactThresholds)
   double root_spring_max = -1.0;      // N m, its torque limit; < 0: 400 with the QP, 120 with pd
+  // match
+  double round_seconds = 180.0;       // --round-seconds: a round's length (the report's round counter)
+  int player = -1;                    // --player 0|1: that boxer takes the keyboard (-1: both AI)
   // graph tool
   std::string graph_report;
   std::string graph_dot;

@@ -9,13 +9,45 @@ namespace boxing {
 PoseSource PoseSource::looping_clip(const eng::anim::Clip& clip) {
   PoseSource s;
   s.clip_ = &clip;
+  s.init_slots(2);
   return s;
 }
 
 PoseSource PoseSource::graph_walk(const eng::anim::MotionGraph& graph, uint64_t seed) {
   PoseSource s;
   s.walker_ = std::make_unique<eng::anim::GraphWalker>(graph, seed, kGuardClip);
+  s.graph_ = &graph;
+  s.init_slots(graph.clips.size());
   return s;
+}
+
+void PoseSource::init_slots(size_t n) {
+  seconds_.assign(n, 0.0);
+  played_.assign(n, 0);
+  timeline_.reserve(1 << 14);
+}
+
+int PoseSource::slot() const {
+  if (walker_) return walker_->current_clip_index();
+  return drill_ && drill_start_ >= 0.0 ? 1 : 0;
+}
+
+const std::string& PoseSource::slot_name(int s) const {
+  if (graph_) return graph_->clips[s].name;
+  return s == 1 ? drill_->name : clip_->name;
+}
+
+std::map<std::string, double> PoseSource::clip_time() const {
+  std::map<std::string, double> out;
+  for (size_t s = 0; s < seconds_.size(); ++s)
+    if (played_[s]) out[slot_name(static_cast<int>(s))] = seconds_[s];
+  return out;
+}
+
+std::vector<std::pair<double, std::string>> PoseSource::timeline() const {
+  std::vector<std::pair<double, std::string>> out;
+  for (const auto& [t, s] : timeline_) out.emplace_back(t, slot_name(s));
+  return out;
 }
 
 PoseSource PoseSource::drill(const eng::anim::Clip& guard, const eng::anim::Clip& clip, double every) {
@@ -24,6 +56,7 @@ PoseSource PoseSource::drill(const eng::anim::Clip& guard, const eng::anim::Clip
   s.drill_ = &clip;
   s.drill_every_ = every;
   s.drill_next_ = every;
+  s.init_slots(2);
   return s;
 }
 
@@ -32,24 +65,30 @@ const std::string& PoseSource::current_clip() const {
   return drill_ && drill_start_ >= 0.0 ? drill_->name : clip_->name;
 }
 
-eng::anim::Pose PoseSource::preview(double ahead) const {
+const eng::anim::Pose& PoseSource::preview(double ahead) const {
   if (walker_) return walker_->preview(ahead);
   const double t = now_ - last_dt_ + ahead;  // tick() sampled the clips at now_ - dt
-  if (drill_ && drill_start_ >= 0.0) {
-    eng::anim::Pose p = eng::anim::sample_clip_pose(*drill_, std::min(t - drill_start_, drill_->duration()));
-    p.root_position += drill_offset_;
-    return p;
-  }
-  // Looping guard (t_ has advanced past the sampled time already).
-  eng::anim::Pose p = eng::anim::sample_clip_pose(*clip_, t_ - last_dt_ + ahead);
-  p.root_position += drill_offset_;
-  return p;
+  if (drill_ && drill_start_ >= 0.0)
+    eng::anim::sample_clip_pose(*drill_, std::min(t - drill_start_, drill_->duration()), &preview_);
+  else  // looping guard (t_ has advanced past the sampled time already)
+    eng::anim::sample_clip_pose(*clip_, t_ - last_dt_ + ahead, &preview_);
+  preview_.root_position += drill_offset_;
+  return preview_;
 }
 
 eng::anim::PoseSample PoseSource::tick(double dt, const Eigen::Vector2d& anchor) {
+  eng::anim::PoseSample s;
+  tick(dt, anchor, &s);
+  return s;
+}
+
+void PoseSource::tick(double dt, const Eigen::Vector2d& anchor, eng::anim::PoseSample* out) {
+  eng::anim::PoseSample& s = *out;
   last_dt_ = dt;
-  clip_time_[current_clip()] += dt;
-  if (timeline_.empty() || timeline_.back().second != current_clip()) timeline_.emplace_back(now_, current_clip());
+  const int now_slot = slot();
+  seconds_[now_slot] += dt;
+  played_[now_slot] = 1;
+  if (timeline_.empty() || slot_name(timeline_.back().second) != current_clip()) timeline_.emplace_back(now_, now_slot);
   now_ += dt;
   if (drill_) {
     // Guard until drill_next_, then the clip from its start (the next play drill_every_ later, or 0.5 s after the clip
@@ -67,18 +106,20 @@ eng::anim::PoseSample PoseSource::tick(double dt, const Eigen::Vector2d& anchor)
       drill_start_ = -1.0;
       t_ = 0.0;
     }
-    eng::anim::PoseSample s = drill_start_ >= 0.0 ? eng::anim::sample_clip(*drill_, t - drill_start_)
-                                                  : eng::anim::sample_clip(*clip_, t_);
+    if (drill_start_ >= 0.0)
+      eng::anim::sample_clip(*drill_, t - drill_start_, &s);
+    else
+      eng::anim::sample_clip(*clip_, t_, &s);
     if (drill_start_ < 0.0) t_ += dt;
     s.pose.root_position += drill_offset_;
-    return s;
+    return;
   }
   if (!walker_) {
-    eng::anim::PoseSample s = eng::anim::sample_clip(*clip_, t_);
+    eng::anim::sample_clip(*clip_, t_, &s);
     t_ += dt;
-    return s;
+    return;
   }
-  eng::anim::PoseSample s = walker_->tick(dt);
+  walker_->tick(dt, &s);
   // The crates are a small stage: a walk that has wandered off its spot steps back toward it (the way a player
   // or an AI keeps a boxer in range), using the graph's own footwork clips.
   // Only the drift along the facing direction can be undone by stepping forward or back.
@@ -87,8 +128,7 @@ eng::anim::PoseSample PoseSource::tick(double dt, const Eigen::Vector2d& anchor)
   const Eigen::Vector2d fwd = fwd3.head<2>().normalized();
   const double along = fwd.dot(drift);
   if (!walker_->has_plan() && std::abs(along) > leash_)
-    walker_->request_clip(along > 0 ? "step_back" : "step_forward");
-  return s;
+    walker_->request_clip(along > 0 ? "step_back" : "step_forward", /*repeat=*/true);
 }
 
 }  // namespace boxing

@@ -26,16 +26,21 @@ class PoseSource {
   // (plus `anchor`, the offset at which the boxer places the walk, in the clip frame) has drifted more than
   // `leash` metres along its heading, it asks the graph for a step back / forward.
   eng::anim::PoseSample tick(double dt, const Eigen::Vector2d& anchor = Eigen::Vector2d::Zero());
+  // The same into *out, reusing its storage (the per-tick call: no allocation once warm).
+  void tick(double dt, const Eigen::Vector2d& anchor, eng::anim::PoseSample* out);
   // The source's pose (clip floor frame, like tick's) `ahead` seconds after the last tick, staying in the clip now
   // playing (a walk's next transition is not known yet). preview(0) is the last tick's pose.
-  eng::anim::Pose preview(double ahead) const;
+  // The pose is the source's own: valid until the next preview or tick.
+  const eng::anim::Pose& preview(double ahead) const;
   const std::string& current_clip() const;
   bool is_walk() const { return walker_ != nullptr; }
+  // How far (m, along the heading) a walk may drift from its spot before it steps back toward it (default 0.25).
+  void set_leash(double metres) { leash_ = metres; }
   eng::anim::GraphWalker* walker() { return walker_.get(); }
-  // Seconds spent per clip so far.
-  const std::map<std::string, double>& clip_time() const { return clip_time_; }
+  // Seconds spent per clip so far (the clips played, by name; built for the report).
+  std::map<std::string, double> clip_time() const;
   // Every clip change: (time it started, clip), in order; the report's clip timeline.
-  const std::vector<std::pair<double, std::string>>& timeline() const { return timeline_; }
+  std::vector<std::pair<double, std::string>> timeline() const;
 
  private:
   const eng::anim::Clip* clip_ = nullptr;
@@ -44,11 +49,20 @@ class PoseSource {
   Eigen::Vector3d drill_offset_ = Eigen::Vector3d::Zero();
   double t_ = 0.0;
   std::unique_ptr<eng::anim::GraphWalker> walker_;
-  std::map<std::string, double> clip_time_;
-  std::vector<std::pair<double, std::string>> timeline_;
+  const eng::anim::MotionGraph* graph_ = nullptr;
+  // Per clip slot (the graph's clip index; else 0 = the looping clip, 1 = the drill's): seconds played and whether
+  // it played at all; the timeline as (start time, slot), capacity kept for hours of clip changes (no allocation per
+  // tick).
+  int slot() const;
+  const std::string& slot_name(int slot) const;
+  void init_slots(size_t n);
+  std::vector<double> seconds_;
+  std::vector<char> played_;
+  std::vector<std::pair<double, int>> timeline_;
   double now_ = 0.0;
   double last_dt_ = 0.0;
   double leash_ = 0.25;
+  mutable eng::anim::Pose preview_;
 };
 
 }  // namespace boxing

@@ -132,7 +132,7 @@ void add_boxer(World& w, int index, const Eigen::Vector3f& color, bool limp, con
   b.team_color = color;
   b.stance = stance;
   b.limp = limp;
-  b.bones = eng::control::biped_bones(w.boxer_desc.skeleton);
+  b.bones = eng::control::biped_bones(w.boxer_desc.skeleton, boxing::kBoxerLegs);
   if (w.options.contact_gap >= 0.0) {  // the unified-threshold experiment (docs/decisions/foot-contact-thresholds.md)
     eng::control::FootContactThresholds& t = b.settings.tuning.contact;
     t.support = t.load = t.fallen = w.options.contact_gap;
@@ -202,7 +202,7 @@ eng::Result<std::unique_ptr<World>> make_world(const Options& o) {
     return eng::make_error("boxing: --clip '" + o.drill_clip + "' is not a clip in " + dir +
                            "/clips/boxing_clips.gltf (see `build/boxing graph --report g.json` for the names)");
 
-  w->arena = make_arena(o.seed);
+  w->arena = make_arena(o.seed, 0.10, o.scenario_id == Scenario::Match ? kFightSeparation : kBoxerSeparation);
   w->model.dt = kPhysicsDt;
   add_static_arena(*w);
 
@@ -223,28 +223,43 @@ eng::Result<std::unique_ptr<World>> make_world(const Options& o) {
 
 void step_world(World& w) {
   using clock = std::chrono::steady_clock;
+  auto ms = [](clock::time_point a, clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
   const auto t0 = clock::now();
   eng::physics::clear_applied(w.data);
   // The step's first half (kinematics, contacts, rows, the mass matrix and c(q, v)) once, for the physics and for
   // every boxer's control: the balance QPs read their blocks of d.M_crba and d.qfrc_bias (MuJoCo's mj_step1 /
   // mj_step2 split). Control then writes torques, spring references and forces for the second half.
   eng::physics::step1(w.model, w.data);
+  const auto t1 = clock::now();
+  const ScenarioHooks& scenario = scenario_hooks(w.options.scenario_id);
+  if (scenario.before_control) scenario.before_control(w);
   for (Boxer& b : w.boxers) boxer_control(w.model, w.data, w.boxer_desc, w.arena, b, kPhysicsDt);
 
   // The scenario's forces (the push scenario's chest push).
-  const ScenarioHooks& scenario = scenario_hooks(w.options.scenario_id);
   w.push_active = false;
   if (scenario.before_step) scenario.before_step(w);
+  const auto t2 = clock::now();
 
   eng::physics::step2(w.model, w.data);
+  const auto t3 = clock::now();
   for (Boxer& b : w.boxers) boxer_sense_contacts(w.data, b);
   for (Boxer& b : w.boxers) boxer_measure(w.model, w.data, w.boxer_desc, b, kPhysicsDt);
   if (scenario.after_step) scenario.after_step(w);
   ++w.steps;
-  w.physics_ms_total += std::chrono::duration<double, std::milli>(clock::now() - t0).count();
+  const auto t4 = clock::now();
+  w.profile.step1_ms += ms(t0, t1), w.profile.control_ms += ms(t1, t2), w.profile.step2_ms += ms(t2, t3);
+  w.profile.sense_ms += ms(t3, t4);
+  w.physics_ms_total += ms(t0, t4);
 }
 
 namespace {
+// Mean wall time per 240 Hz tick of each stage of step_world (this machine; reporting only).
+nlohmann::json tick_profile_report(const World& w) {
+  const double n = w.steps ? static_cast<double>(w.steps) : 1.0;
+  return {{"step1", w.profile.step1_ms / n}, {"control", w.profile.control_ms / n}, {"step2", w.profile.step2_ms / n},
+          {"sense", w.profile.sense_ms / n}};
+}
+
 // The balance QP's solve cost (wall clock, this machine): median and 95th percentile per boxer; null with PD.
 nlohmann::json qp_report(const Boxer& b) {
   if (!b.uses_qp()) return nullptr;
@@ -302,6 +317,7 @@ nlohmann::json world_report(const World& w) {
                       {"physics_steps", w.steps},
                       {"physics_dt", kPhysicsDt},
                       {"physics_ms_per_step", w.steps ? w.physics_ms_total / w.steps : 0.0},
+                      {"tick_profile_ms", tick_profile_report(w)},
                       {"boxers", boxers}};
   if (const auto report = scenario_hooks(w.options.scenario_id).report) report(w, r);
   return r;

@@ -16,6 +16,7 @@
 #include "game/arena.h"
 #include "game/boxer.h"
 #include "game/cli.h"
+#include "game/match/match.h"
 
 namespace boxing {
 
@@ -41,7 +42,14 @@ struct World {
   std::vector<LooseBody> loose;         // free crates
   long steps = 0;
   double physics_ms_total = 0.0;        // wall time spent in physics (reporting only, never fed back)
+  // Wall time per stage of step_world, summed over the steps (reporting only): step1 (kinematics, collision,
+  // constraint rows, M and c), control (every boxer: pose source, servo, balance controller), step2 (passive
+  // forces, dynamics, constraint solve, integration), sense (foot contacts, metrics, scenario hooks).
+  struct TickProfile {
+    double step1_ms = 0.0, control_ms = 0.0, step2_ms = 0.0, sense_ms = 0.0;
+  } profile;
   bool push_active = false;
+  Match match;  // the match scenario's fight (game/match/match.h); inactive elsewhere
 };
 
 // Loads content (boxer, clips) from options.content_dir and builds the scenario.

@@ -75,12 +75,16 @@ Vector3d pos_tangent(const Clip& c, int k) {
   return (nb.hn * sp + nb.hp * sn) / (nb.hp + nb.hn);
 }
 
-Pose pose_at(const Clip& c, double t) {
-  Pose out;
+void pose_into(const Clip& c, double t, Pose& out) {
   const int nb = c.keys.empty() ? 0 : static_cast<int>(c.keys[0].rotation.size());
-  out.rotation.resize(nb, Quaterniond::Identity());
-  if (c.keys.empty()) return out;
-  if (c.keys.size() == 1) return c.keys[0];
+  out.root_position.setZero();
+  out.rotation.assign(nb, Quaterniond::Identity());  // reuses the capacity: no allocation once warm
+  if (c.keys.empty()) return;
+  if (c.keys.size() == 1) {
+    out.rotation = c.keys[0].rotation;
+    out.root_position = c.keys[0].root_position;
+    return;
+  }
   t = wrap_time(c, t);
   const int i = find_segment(c.key_times, t);
   const double h = c.key_times[i + 1] - c.key_times[i];
@@ -106,7 +110,6 @@ Pose pose_at(const Clip& c, double t) {
     const Vector3d r2 = quat_log(q1.conjugate() * q2);
     out.rotation[b] = (q0 * quat_exp(r1 * b1) * quat_exp(r2 * b2) * quat_exp(r3 * b3)).normalized();
   }
-  return out;
 }
 
 }  // namespace
@@ -115,7 +118,13 @@ bool Clip::has_tag(const std::string& tag) const {
   return std::find(tags.begin(), tags.end(), tag) != tags.end();
 }
 
-Pose sample_clip_pose(const Clip& c, double t) { return pose_at(c, t); }
+Pose sample_clip_pose(const Clip& c, double t) {
+  Pose out;
+  pose_into(c, t, out);
+  return out;
+}
+
+void sample_clip_pose(const Clip& c, double t, Pose* out) { pose_into(c, t, *out); }
 
 Eigen::Vector3d angular_velocity_between(const Eigen::Quaterniond& qa, const Eigen::Quaterniond& qb,
                                          double dt) {
@@ -123,9 +132,16 @@ Eigen::Vector3d angular_velocity_between(const Eigen::Quaterniond& qa, const Eig
 }
 
 PoseSample sample_clip(const Clip& c, double t) {
-  constexpr double kH = 1e-4;
   PoseSample s;
-  s.pose = pose_at(c, t);
+  sample_clip(c, t, &s);
+  return s;
+}
+
+void sample_clip(const Clip& c, double t, PoseSample* out) {
+  constexpr double kH = 1e-4;
+  PoseSample& s = *out;
+  pose_into(c, t, s.pose);
+  s.root_velocity.setZero();
   double ta = t - kH, tb = t + kH;
   if (!c.loop) {
     const double tc = std::clamp(t, 0.0, c.duration());
@@ -134,12 +150,14 @@ PoseSample sample_clip(const Clip& c, double t) {
   }
   const int nb = static_cast<int>(s.pose.rotation.size());
   s.angular_velocity.assign(nb, Vector3d::Zero());
-  if (tb - ta <= 0.0) return s;
-  const Pose a = pose_at(c, ta), b = pose_at(c, tb);
+  if (tb - ta <= 0.0) return;
+  // The two poses of the central difference, kept per thread between calls (no allocation once warm).
+  thread_local Pose a, b;
+  pose_into(c, ta, a);
+  pose_into(c, tb, b);
   const double dt = tb - ta;
   s.root_velocity = (b.root_position - a.root_position) / dt;
   for (int i = 0; i < nb; ++i) s.angular_velocity[i] = angular_velocity_between(a.rotation[i], b.rotation[i], dt);
-  return s;
 }
 
 int find_clip(const std::vector<Clip>& clips, const std::string& name) {

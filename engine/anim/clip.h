@@ -45,6 +45,9 @@ struct Clip {
 Pose sample_clip_pose(const Clip& c, double t);
 // Pose plus root velocity and per-bone angular velocity (PoseSample contract, see skeleton.h).
 PoseSample sample_clip(const Clip& c, double t);
+// The same into *out, reusing its storage: no allocation once *out has held a pose of this skeleton (per tick).
+void sample_clip_pose(const Clip& c, double t, Pose* out);
+void sample_clip(const Clip& c, double t, PoseSample* out);
 
 // Angular velocity (parent/world frame) that takes qa to qb in dt: Log(qb qa^-1) / dt.
 Eigen::Vector3d angular_velocity_between(const Eigen::Quaterniond& qa, const Eigen::Quaterniond& qb,

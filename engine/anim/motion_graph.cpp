@@ -76,19 +76,17 @@ bool has_any_tag(const Clip& c, const std::vector<std::string>& tags) {
   return false;
 }
 
-Pose blend_pose(const Pose& a, const Pose& b, double w) {
-  Pose out;
+// out = a blended toward b by w (out may be b, not a).
+void blend_pose_into(const Pose& a, const Pose& b, double w, Pose& out) {
   out.root_position = (1.0 - w) * a.root_position + w * b.root_position;
   out.rotation.resize(a.rotation.size());
   for (size_t i = 0; i < a.rotation.size(); ++i) out.rotation[i] = a.rotation[i].slerp(w, b.rotation[i]).normalized();
-  return out;
 }
 
-Pose to_world(const Pose& p, const Align2D& T) {
-  Pose out = p;
-  out.root_position = T.apply(p.root_position);
-  if (!out.rotation.empty()) out.rotation[0] = (T.rotation() * p.rotation[0]).normalized();
-  return out;
+// p (clip frame) placed by the walk's 2D alignment T, in place.
+void to_world_in_place(Pose& p, const Align2D& T) {
+  p.root_position = T.apply(p.root_position);
+  if (!p.rotation.empty()) p.rotation[0] = (T.rotation() * p.rotation[0]).normalized();
 }
 
 double ease(double u) {
@@ -328,6 +326,12 @@ void GraphWalker::decide() {
   const int v = current_node();
   const auto& es = g_->edges[v];
   const bool at_end = frame_ == g_->frame_count[clip_] - 1 && time_ >= g_->clips[clip_].duration();
+  // A request is done once the walk is in its target: the walk goes on at random from there (kept, the target
+  // drew the walk back into the requested clip at every continuation: a requested punch thrown again and again).
+  if (!repeat_ && !plan_target_.empty() && plan_target_[v]) {
+    plan_target_.clear();
+    plan_.clear();
+  }
   if (!plan_.empty()) {
     const GraphNode& pf = g_->nodes[plan_.front().from_node];
     if (pf.clip == clip_ && pf.frame < frame_) {  // went past it (should not happen): replan
@@ -352,31 +356,47 @@ void GraphWalker::decide() {
     }
   }
   if (at_end) {
-    std::vector<int> cont;
-    for (size_t i = 0; i < es.size(); ++i)
-      if (es[i].kind == EdgeKind::Continuation) cont.push_back(static_cast<int>(i));
-    if (cont.empty()) return;  // cannot happen in a pruned graph
-    std::vector<int> self, other;
-    for (int i : cont) (g_->nodes[es[i].to].clip == clip_ ? self : other).push_back(i);
-    const std::vector<int>& pool =
-        self.empty() || other.empty() ? cont : (uniform() < loop_probability ? self : other);
-    const int pick = pool[std::min(pool.size() - 1, static_cast<size_t>(uniform() * pool.size()))];
+    // The continuations, split into those looping back to this clip and the others; one drawn (no lists built:
+    // the k-th edge of a kind is found by counting, the same draw as indexing a list of them).
+    int n_cont = 0, n_self = 0;
+    for (const GraphEdge& e : es)
+      if (e.kind == EdgeKind::Continuation) {
+        ++n_cont;
+        if (g_->nodes[e.to].clip == clip_) ++n_self;
+      }
+    if (n_cont == 0) return;  // cannot happen in a pruned graph
+    const int n_other = n_cont - n_self;
+    int pool = 0;  // 0: every continuation, 1: self, 2: other
+    if (n_self > 0 && n_other > 0) pool = uniform() < loop_probability ? 1 : 2;
+    const int size = pool == 0 ? n_cont : pool == 1 ? n_self : n_other;
+    const int k = static_cast<int>(std::min(static_cast<size_t>(size) - 1, static_cast<size_t>(uniform() * size)));
+    int pick = -1;
+    for (int i = 0, seen = 0; i < static_cast<int>(es.size()) && pick < 0; ++i) {
+      if (es[i].kind != EdgeKind::Continuation) continue;
+      const bool self = g_->nodes[es[i].to].clip == clip_;
+      if (pool == 1 && !self) continue;
+      if (pool == 2 && self) continue;
+      if (seen++ == k) pick = i;
+    }
     plan_.clear();
     take_edge(v, es[pick]);
     if (!plan_target_.empty()) plan_to(plan_target_);
     return;
   }
   if (!plan_.empty() || blend_.active) return;
-  std::vector<int> tr;
-  for (size_t i = 0; i < es.size(); ++i)
-    if (es[i].kind == EdgeKind::Transition) tr.push_back(static_cast<int>(i));
-  if (tr.empty()) return;
+  int n_tr = 0;
+  for (const GraphEdge& e : es) n_tr += e.kind == EdgeKind::Transition;
+  if (n_tr == 0) return;
   if (uniform() >= transition_probability) return;
-  const int pick = tr[std::min(tr.size() - 1, static_cast<size_t>(uniform() * tr.size()))];
-  take_edge(v, es[pick]);
+  const int k = static_cast<int>(std::min(static_cast<size_t>(n_tr) - 1, static_cast<size_t>(uniform() * n_tr)));
+  for (int i = 0, seen = 0; i < static_cast<int>(es.size()); ++i)
+    if (es[i].kind == EdgeKind::Transition && seen++ == k) {
+      take_edge(v, es[i]);
+      return;
+    }
 }
 
-PoseSample GraphWalker::tick(double dt) {
+void GraphWalker::tick(double dt, PoseSample* out) {
   time_ += dt;
   if (blend_.active) {
     blend_.time += dt;
@@ -402,32 +422,45 @@ PoseSample GraphWalker::tick(double dt) {
     break;
   }
   constexpr double h = 1e-4;
-  PoseSample s;
-  s.pose = world_pose_at(0.0);
-  const Pose a = world_pose_at(-h), b = world_pose_at(h);
-  s.root_velocity = (b.root_position - a.root_position) / (2 * h);
+  PoseSample& s = *out;
+  world_pose_at(0.0, s.pose);
+  world_pose_at(-h, fd_a_);
+  world_pose_at(h, fd_b_);
+  s.root_velocity = (fd_b_.root_position - fd_a_.root_position) / (2 * h);
   s.angular_velocity.resize(s.pose.rotation.size());
   for (size_t i = 0; i < s.pose.rotation.size(); ++i)
-    s.angular_velocity[i] = angular_velocity_between(a.rotation[i], b.rotation[i], 2 * h);
+    s.angular_velocity[i] = angular_velocity_between(fd_a_.rotation[i], fd_b_.rotation[i], 2 * h);
+}
+
+PoseSample GraphWalker::tick(double dt) {
+  PoseSample s;
+  tick(dt, &s);
   return s;
 }
 
-Pose GraphWalker::world_pose_at(double off) const {
+const Pose& GraphWalker::preview(double ahead) const {
+  world_pose_at(ahead, preview_);
+  return preview_;
+}
+
+void GraphWalker::world_pose_at(double off, Pose& out) const {
   const Clip& c = g_->clips[clip_];
   // within the current clip, time is clamped to the clip (the walk continues in the next clip);
   // just after a continuation, negative offsets look back into the clip that was left
-  Pose cur;
   if (time_ + off < 0.0 && prev_clip_ >= 0) {
     const Clip& pc = g_->clips[prev_clip_];
-    cur = to_world(sample_clip_pose(pc, std::max(0.0, pc.duration() + time_ + off)), prev_T_);
+    sample_clip_pose(pc, std::max(0.0, pc.duration() + time_ + off), &out);
+    to_world_in_place(out, prev_T_);
   } else {
-    cur = to_world(sample_clip_pose(c, c.loop ? time_ + off : std::clamp(time_ + off, 0.0, c.duration())), T_);
+    sample_clip_pose(c, c.loop ? time_ + off : std::clamp(time_ + off, 0.0, c.duration()), &out);
+    to_world_in_place(out, T_);
   }
-  if (!blend_.active) return cur;
+  if (!blend_.active) return;
   const Clip& ca = g_->clips[blend_.clip];
-  const Pose pa = to_world(sample_clip_pose(ca, ca.loop ? blend_.time + off : std::clamp(blend_.time + off, 0.0, ca.duration())), blend_.T);
+  sample_clip_pose(ca, ca.loop ? blend_.time + off : std::clamp(blend_.time + off, 0.0, ca.duration()), &blend_from_);
+  to_world_in_place(blend_from_, blend_.T);
   const double w = ease((blend_.elapsed + off) / blend_.duration);
-  return blend_pose(pa, cur, w);
+  blend_pose_into(blend_from_, out, w, out);
 }
 
 bool GraphWalker::plan_to(const std::vector<char>& target) {
@@ -435,18 +468,21 @@ bool GraphWalker::plan_to(const std::vector<char>& target) {
   const int N = static_cast<int>(g_->nodes.size());
   const int src = current_node();
   if (target[src]) return true;
-  std::vector<double> dist(N, std::numeric_limits<double>::infinity());
-  std::vector<std::pair<int, int>> prev(N, {-1, -1});
+  // Dijkstra over the nodes; its arrays and heap are the walker's, kept between plans (no allocation once warm).
+  dist_.assign(N, std::numeric_limits<double>::infinity());
+  prev_.assign(N, {-1, -1});
   using QE = std::pair<double, int>;
-  std::priority_queue<QE, std::vector<QE>, std::greater<QE>> pq;
-  dist[src] = 0;
-  pq.push({0.0, src});
+  const std::greater<QE> later;
+  heap_.clear();
+  dist_[src] = 0;
+  heap_.push_back({0.0, src});
   int found = -1;
   const int k1 = std::max(1, g_->options.window - 1);
-  while (!pq.empty()) {
-    auto [d, v] = pq.top();
-    pq.pop();
-    if (d > dist[v]) continue;
+  while (!heap_.empty()) {
+    std::pop_heap(heap_.begin(), heap_.end(), later);
+    const auto [d, v] = heap_.back();
+    heap_.pop_back();
+    if (d > dist_[v]) continue;
     if (target[v]) {
       found = v;
       break;
@@ -457,26 +493,27 @@ bool GraphWalker::plan_to(const std::vector<char>& target) {
       if (e.kind == EdgeKind::Knockdown || !g_->alive[e.to]) continue;
       if (v == src && e.kind == EdgeKind::Transition) continue;  // src's decision is already made
       const double w = e.kind == EdgeKind::Transition ? k1 : 1.0;
-      if (d + w < dist[e.to]) {
-        dist[e.to] = d + w;
-        prev[e.to] = {v, static_cast<int>(i)};
-        pq.push({d + w, e.to});
+      if (d + w < dist_[e.to]) {
+        dist_[e.to] = d + w;
+        prev_[e.to] = {v, static_cast<int>(i)};
+        heap_.push_back({d + w, e.to});
+        std::push_heap(heap_.begin(), heap_.end(), later);
       }
     }
   }
   if (found < 0) return false;
-  std::vector<Step> rev;
-  for (int v = found; v != src;) {
-    const auto [p, ei] = prev[v];
-    if (g_->edges[p][ei].kind != EdgeKind::Next) rev.push_back({p, ei});
+  for (int v = found; v != src;) {  // walked back from the target, then reversed
+    const auto [p, ei] = prev_[v];
+    if (g_->edges[p][ei].kind != EdgeKind::Next) plan_.push_back({p, ei});
     v = p;
   }
-  plan_.assign(rev.rbegin(), rev.rend());
+  std::reverse(plan_.begin(), plan_.end());
   return true;
 }
 
-bool GraphWalker::request_tag(const std::string& tag) {
-  std::vector<char> target(g_->nodes.size(), 0);
+bool GraphWalker::request_tag(const std::string& tag, bool repeat) {
+  std::vector<char>& target = target_;
+  target.assign(g_->nodes.size(), 0);
   bool any = false;
   for (size_t c = 0; c < g_->clips.size(); ++c) {
     if (!g_->clips[c].has_tag(tag)) continue;
@@ -485,21 +522,24 @@ bool GraphWalker::request_tag(const std::string& tag) {
       if (g_->alive[g_->node(static_cast<int>(c), f)]) target[g_->node(static_cast<int>(c), f)] = any = true;
   }
   if (!any) return false;
+  repeat_ = repeat;
   plan_target_ = target;
   const bool ok = plan_to(target);
   if (ok && plan_.empty()) plan_target_.clear();  // already there
   return ok;
 }
 
-bool GraphWalker::request_clip(const std::string& name) {
+bool GraphWalker::request_clip(const std::string& name, bool repeat) {
   const int c = g_->clip_index(name);
   if (c < 0) return false;
-  std::vector<char> target(g_->nodes.size(), 0);
+  std::vector<char>& target = target_;
+  target.assign(g_->nodes.size(), 0);
   bool any = false;
   const int n = g_->frame_count[c];
   for (int f = 0; f <= std::max(0, (n - 1) / 4); ++f)
     if (g_->alive[g_->node(c, f)]) target[g_->node(c, f)] = any = true;
   if (!any) return false;
+  repeat_ = repeat;
   plan_target_ = target;
   const bool ok = plan_to(target);
   if (ok && plan_.empty()) plan_target_.clear();

@@ -137,12 +137,16 @@ class GraphWalker {
   // motion accumulated along the walk with the 2D alignment at every transition), root velocity and
   // angular velocities (central difference of the played motion, h = 1e-4 s; PoseSample contract).
   PoseSample tick(double dt);
+  // The same into *out, reusing its storage (no allocation once warm: the per-tick call).
+  void tick(double dt, PoseSample* out);
 
   // Steering: plan the shortest (in frames, Dijkstra) path to the early frames (first quarter) of the
   // nearest clip with the tag / name; the planned transitions are taken as soon as the walk reaches
   // them. Returns false when no such clip is reachable.
-  bool request_tag(const std::string& tag);
-  bool request_clip(const std::string& name);
+  // A request is done once the walk is in the target; repeat = true keeps it (every continuation plans back to it until
+  // another request replaces it: a leash that keeps stepping back).
+  bool request_tag(const std::string& tag, bool repeat = false);
+  bool request_clip(const std::string& name, bool repeat = false);
   // Knockdown / hit reaction: blend (>= k-1 frames, longer for distant poses, root aligned) from the current pose into
   // frame 0 of the clip, from any frame; its natural continuations take over afterwards
   // (fall_back -> down_back -> getup_back -> guard). Returns false for an unknown clip.
@@ -150,8 +154,12 @@ class GraphWalker {
 
   // The walk's world pose `ahead` seconds after the last tick, were it to stay in the current clip (and blend): the
   // next transition is not drawn yet, so time stops at the clip's end. Look-ahead, e.g. where a step will land.
-  Pose preview(double ahead) const { return world_pose_at(ahead); }
+  // The pose is the walker's: valid until the next preview or tick.
+  const Pose& preview(double ahead) const;
   const std::string& current_clip() const;
+  int current_clip_index() const { return clip_; }
+  // Seconds into the current clip (a looping clip's time keeps growing; wrap it with the clip's duration).
+  double clip_time() const { return time_; }
   int current_node() const { return g_->node(clip_, frame_); }
   bool blending() const { return blend_.active; }
   bool has_plan() const { return !plan_.empty(); }
@@ -176,7 +184,7 @@ class GraphWalker {
   void take_edge(int from_node, const GraphEdge& e);
   void decide();
   bool plan_to(const std::vector<char>& target);
-  Pose world_pose_at(double dt_offset) const;
+  void world_pose_at(double dt_offset, Pose& out) const;
 
   const MotionGraph* g_;
   std::mt19937_64 rng_;
@@ -189,6 +197,14 @@ class GraphWalker {
   Blend blend_;
   std::vector<Step> plan_;
   std::vector<char> plan_target_;
+  bool repeat_ = false;  // keep plan_target_ once reached (request_* repeat)
+  // Scratch kept between ticks and plans so that a walk allocates nothing once warm.
+  mutable Pose preview_, blend_from_;
+  Pose fd_a_, fd_b_;  // the poses of tick's central difference
+  std::vector<double> dist_;
+  std::vector<std::pair<int, int>> prev_;
+  std::vector<std::pair<double, int>> heap_;
+  std::vector<char> target_;
 };
 
 // Summary: clips, frames, edges by kind, transitions per clip, SCC size and covered tags, threshold.

@@ -13,6 +13,7 @@
 #include "engine/physics/dynamics.h"
 #include "game/balance/balance_controller.h"
 #include "game/balance/com_support.h"
+#include "game/balance/stand_up.h"
 #include "game/boxer.h"
 
 namespace boxing {
@@ -65,6 +66,11 @@ void actuate(QpBalance& q, BalanceTick& tick) {
     // the simulation diverge within 1-4 s (walk seed 3, even with every ground contact in the plan, accelerations
     // capped at 200 rad/s^2 or torques at 400 N m). So a fallen boxer goes limp (the passive joint damping stays).
     for (int k = in.dof_begin; k < in.dof_end; ++k) d.tau[k] = 0.0;
+    return;
+  }
+  if (b.ctl.state.state == BoxerState::GettingUp) {  // the match's stand-up: the servo's torques + root assist
+    for (int k = in.dof_begin; k < in.dof_end; ++k) d.tau[k] = 0.0;
+    actuate_stand_up(tick, b.settings.tuning.stand_up);
     return;
   }
 
@@ -145,7 +151,7 @@ void actuate(QpBalance& q, BalanceTick& tick) {
   }
 
   // Bone orientation tasks (eq. 3 as accelerations).
-  const double wn = b.settings.gains.omega_n, kp = wn * wn, kd = 2.0 * b.settings.gains.zeta * wn;
+  const double wn = b.settings.gains.omega_n * b.ctl.gain_scale, kp = wn * wn, kd = 2.0 * b.settings.gains.zeta * wn;
   for (int i = 0; i < n; ++i) {
     eng::control::QpAngularTask t;
     t.body = b.bodies.body[i];

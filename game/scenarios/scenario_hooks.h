@@ -2,6 +2,7 @@
 // A scenario's hooks into the world (game/world.cpp calls them; no scenario strings compared there):
 //   setup        adds the boxers / bodies to the model (before Model::finalize); rng: the world's layout stream
 //   place        their initial poses in the Data (after make_data)
+//   before_control each tick after the step's first half, before the boxers' control (the match's AI and aim)
 //   before_step  each tick after the boxers' control, before the physics step (external forces)
 //   after_step   each tick after the physics step and the measurements
 //   report       adds the scenario's own block to the report
@@ -19,6 +20,7 @@ struct ScenarioHooks {
   bool walks_graph = false;  // the motion graph is built, boxers walk it, the root spring is on under --root-spring auto
   void (*setup)(World& w, Rng& rng) = nullptr;
   void (*place)(World& w, Rng& rng) = nullptr;
+  void (*before_control)(World& w) = nullptr;
   void (*before_step)(World& w) = nullptr;
   void (*after_step)(World& w) = nullptr;
   void (*report)(const World& w, nlohmann::json& r) = nullptr;

@@ -142,3 +142,25 @@ TEST(ClipSpline, NoOvershootBeyondReason) {
     EXPECT_LE(v.x(), M_PI / 2 + 1e-9);
   }
 }
+
+// The per-tick forms (into a kept PoseSample / Pose) give the same numbers, bit for bit, as the value forms, and a
+// second call into the same storage (the no-allocation path) as well.
+TEST(ClipSample, IntoStorageEqualsByValueBitForBit) {
+  const auto& clips = anim_test::content_clips();
+  PoseSample into;
+  Pose pose_into;
+  for (const Clip& c : clips)
+    for (double t : {0.0, 0.013, c.duration() * 0.5, c.duration(), c.duration() + 0.2}) {
+      const PoseSample v = sample_clip(c, t);
+      sample_clip(c, t, &into);
+      ASSERT_EQ(v.pose.rotation.size(), into.pose.rotation.size());
+      EXPECT_EQ(v.pose.root_position, into.pose.root_position) << c.name << " t " << t;
+      EXPECT_EQ(v.root_velocity, into.root_velocity);
+      for (size_t i = 0; i < v.pose.rotation.size(); ++i) {
+        EXPECT_EQ(v.pose.rotation[i].coeffs(), into.pose.rotation[i].coeffs());
+        EXPECT_EQ(v.angular_velocity[i], into.angular_velocity[i]);
+      }
+      sample_clip_pose(c, t, &pose_into);
+      EXPECT_EQ(pose_into.root_position, v.pose.root_position);
+    }
+}

@@ -232,6 +232,46 @@ TEST(GraphWalker, RequestReachesTaggedClip) {
   EXPECT_FALSE(w.request_clip("no_such_clip"));
 }
 
+// A request is done once the walk is in the requested clip: with no random transitions and guard looping, the clip is
+// played once and the walk stays in guard after it (the target kept, every continuation went back to the clip: a
+// requested punch thrown again and again).
+TEST(GraphWalker, RequestedClipIsPlayedOnceNotAgainAndAgain) {
+  const MotionGraph& g = graph();
+  GraphWalker w(g, 9, "guard");
+  w.transition_probability = 0.0;
+  w.loop_probability = 1.0;
+  for (int i = 0; i < 10; ++i) w.tick(1.0 / 30);
+  ASSERT_TRUE(w.request_clip("jab"));
+  int entries = 0;
+  std::string last = w.current_clip();
+  PoseSample s;
+  for (int i = 0; i < 30 * 8; ++i) {
+    w.tick(1.0 / 30, &s);
+    if (w.current_clip() != last && w.current_clip() == "jab") ++entries;
+    last = w.current_clip();
+  }
+  EXPECT_EQ(entries, 1);
+  EXPECT_EQ(w.current_clip(), "guard");
+  EXPECT_FALSE(w.has_plan());
+}
+
+// The per-tick form (into kept storage) walks the same walk as the value form, bit for bit.
+TEST(GraphWalker, TickIntoStorageEqualsTickByValue) {
+  const MotionGraph& g = graph();
+  GraphWalker a(g, 4), b(g, 4);
+  PoseSample into;
+  for (int i = 0; i < 30 * 20; ++i) {
+    const PoseSample v = a.tick(1.0 / 60);
+    b.tick(1.0 / 60, &into);
+    ASSERT_EQ(v.pose.root_position, into.pose.root_position) << "tick " << i;
+    for (size_t k = 0; k < v.pose.rotation.size(); ++k) {
+      ASSERT_EQ(v.pose.rotation[k].coeffs(), into.pose.rotation[k].coeffs());
+      ASSERT_EQ(v.angular_velocity[k], into.angular_velocity[k]);
+    }
+    ASSERT_EQ(a.preview(0.05).root_position, b.preview(0.05).root_position);
+  }
+}
+
 TEST(GraphWalker, KnockdownGoesDownAndGetsUp) {
   const MotionGraph& g = graph();
   GraphWalker w(g, 8);

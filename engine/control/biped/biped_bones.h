@@ -16,11 +16,16 @@ struct BipedBones {
   bool valid() const { return foot[0] >= 0 && foot[1] >= 0 && leg[0].thigh >= 0 && leg[1].thigh >= 0; }
 };
 
-// thigh_l / shank_l / foot_l and thigh_r / shank_r / foot_r (content/boxer/boxer.gltf's names).
-inline BipedBones biped_bones(const anim::Skeleton& s) {
+// The skeleton's leg bone names, supplied by the game (the engine names no character's bones).
+struct BipedBoneNames {
+  const char* thigh[2];
+  const char* shank[2];
+  const char* foot[2];
+};
+
+inline BipedBones biped_bones(const anim::Skeleton& s, const BipedBoneNames& n) {
   BipedBones b;
-  b.leg[0] = {s.find("thigh_l"), s.find("shank_l"), s.find("foot_l")};
-  b.leg[1] = {s.find("thigh_r"), s.find("shank_r"), s.find("foot_r")};
+  for (int k = 0; k < 2; ++k) b.leg[k] = {s.find(n.thigh[k]), s.find(n.shank[k]), s.find(n.foot[k])};
   b.foot[0] = b.leg[0].foot;
   b.foot[1] = b.leg[1].foot;
   return b;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <vector>
 
+#include "engine/control/ik/two_bone_ik.h"
 #include "engine/control/servo/world_pose.h"
 
 namespace eng::control {
@@ -12,25 +13,11 @@ namespace {
 
 void solve_leg(const anim::Skeleton& skel, const LegBones& L, const std::vector<Eigen::Quaterniond>& W,
                const std::vector<Eigen::Vector3d>& P, const Eigen::Vector3d& ankle, anim::Pose& pose) {
-    const Eigen::Vector3d hip = P[L.thigh];
-
-    const Eigen::Vector3d thigh_off = skel.offset[L.shank], shank_off = skel.offset[L.foot];
-    const double l1 = thigh_off.norm(), l2 = shank_off.norm();
-    const double d = std::clamp((ankle - hip).norm(), std::abs(l1 - l2) + 1e-3, l1 + l2 - 1e-3);
-    // Knee flexion from the law of cosines: the interior angle phi, flexion = pi - phi (hinge about +Y).
-    const double cos_phi = std::clamp((l1 * l1 + l2 * l2 - d * d) / (2 * l1 * l2), -1.0, 1.0);
-    const double flex = M_PI - std::acos(cos_phi);
-    const Eigen::Quaterniond knee(Eigen::AngleAxisd(flex, Eigen::Vector3d::UnitY()));
-
-    // Re-aim the thigh: the smallest world rotation taking the current hip->ankle direction to the target's.
-    const Eigen::Vector3d current = W[L.thigh] * (thigh_off + knee * shank_off);
-    const Eigen::Quaterniond aim = Eigen::Quaterniond::FromTwoVectors(current, ankle - hip);
-    const Eigen::Quaterniond thigh_w = (aim * W[L.thigh]).normalized();
-    const Eigen::Quaterniond shank_w = (thigh_w * knee).normalized();
-    const int pelvis = skel.parent[L.thigh];
-    pose.rotation[L.thigh] = (W[pelvis].conjugate() * thigh_w).normalized();
-    pose.rotation[L.shank] = knee;
-    pose.rotation[L.foot] = (shank_w.conjugate() * W[L.foot]).normalized();
+  // The knee: a hinge flexing about +Y; the foot keeps its world orientation so the sole stays flat.
+  const TwoBoneChain leg{L.thigh, L.shank, L.foot, Eigen::Vector3d::UnitY(), 1.0};
+  const Eigen::Quaterniond thigh_w = solve_two_bone(skel, leg, W, P, ankle, pose);
+  const Eigen::Quaterniond shank_w = (thigh_w * pose.rotation[L.shank]).normalized();
+  pose.rotation[L.foot] = (shank_w.conjugate() * W[L.foot]).normalized();
 }
 
 }  // namespace

@@ -1,0 +1,39 @@
+#pragma once
+// The stand-up (BoxerState::GettingUp, the match's get-up from the crates or the floor). The balance QP plans a body
+// standing on its feet; lying, every link pressed on the ground, its torques made the limbs flail (docs/decisions:
+// qp_balance.cpp's DOWN note). So a stand-up is tracked by the world-space servo's own torques (eq. 3, explicit,
+// every bone toward the get-up clip) with the root assist: the paper's root spring (section V) with its position
+// term, a force- and torque-limited spring-damper pulling the pelvis toward the clip's root (position and
+// orientation), external, no reaction. Its use is reported per get-up (the report's match.getups[].root_assist_*).
+#include "engine/control/servo/root_spring.h"
+
+namespace boxing {
+
+struct BalanceTick;
+
+struct StandUpTuning {
+  eng::control::RootSpringParams assist = [] {
+    eng::control::RootSpringParams p;
+    p.enabled = true;
+    p.omega_n = 4.0;        // rad/s, orientation
+    p.zeta = 1.0;
+    p.max_torque = 400.0;   // N m
+    p.position_spring = true;
+    p.pos_omega_n = 4.0;    // rad/s, position
+    p.pos_zeta = 1.0;
+    p.max_force = 1100.0;   // N (1.5 x the body weight, 75 kg)
+    return p;
+  }();
+  // Share of the body's weight the assist carries as a feed-forward (the rest is the legs' and arms' work): without it
+  // the position spring sagged 0.3 m under the weight and the boxer stayed crouched (docs/decisions/match-get-up.md).
+  double weight_share = 0.85;
+  // Move the get-up's desired motion onto where the pelvis lies (true), or leave it where the walk's fall, down and
+  // get-up clips put it, relative to the boxer's mark (false: the get-up ends standing near the mark, at fighting
+  // distance; the boxers cannot step back to it). docs/decisions/match-get-up.md.
+  bool realign = false;
+};
+
+// Writes the servo's torques and the root assist into the physics data; b.ctl.root_torque / root_force: the assist.
+void actuate_stand_up(BalanceTick& tick, const StandUpTuning& t);
+
+}  // namespace boxing

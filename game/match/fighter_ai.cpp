@@ -1,0 +1,94 @@
+#include "game/match/fighter_ai.h"
+
+#include <cmath>
+#include <cstring>
+
+#include "engine/anim/motion_graph.h"
+
+namespace boxing {
+
+FighterStyle draw_fighter_style(Rng& rng) {
+  FighterStyle s;
+  s.attack_rate = rng.uniform(1.0, 1.6);
+  s.combo = rng.uniform(0.15, 0.4);
+  s.defence = rng.uniform(0.25, 0.55);
+  s.reaction_s = rng.uniform(0.18, 0.26);
+  s.body_share = rng.uniform(0.15, 0.35);
+  // Every punch in the repertoire, the jab most (CompuBox: about half of all punches thrown are jabs), two
+  // favourites weighted up.
+  s.punch_weight = {3.0, 1.5, 1.0, 1.0, 0.7, 0.7, 1.0};
+  for (int k = 0; k < 2; ++k) s.punch_weight[rng.below(static_cast<int>(s.punch_weight.size()))] += 1.0;
+  return s;
+}
+
+namespace {
+
+const char* pick_punch(FighterAi& ai) {
+  double total = 0.0;
+  for (double w : ai.style.punch_weight) total += w;
+  double u = ai.rng.uniform() * total;
+  for (size_t i = 0; i < kPunchClips.size(); ++i) {
+    u -= ai.style.punch_weight[i];
+    if (u < 0.0) return kPunchClips[i];
+  }
+  return kPunchClips[0];
+}
+
+// The defence for the punch coming: hooks ducked or blocked, uppercuts blocked, straights slipped or blocked.
+const char* pick_defence(FighterAi& ai, const char* punch) {
+  const double u = ai.rng.uniform();
+  if (std::strstr(punch, "hook")) return u < 0.5 ? "duck" : "block_high";
+  if (std::strstr(punch, "uppercut")) return "block_high";
+  if (u < 0.35) return "slip_left";
+  if (u < 0.7) return "slip_right";
+  return "block_high";
+}
+
+}  // namespace
+
+const char* fighter_ai_tick(FighterAi& ai, eng::anim::GraphWalker& walker, const FighterView& v, double dt) {
+  (void)dt;
+  // Defence: seen the other's punch start; decided after the reaction time.
+  if (v.other_started && ai.defend_at < 0.0 && ai.rng.uniform() < ai.style.defence) {
+    ai.defend_at = v.time + ai.style.reaction_s;
+    ai.defend_with = pick_defence(ai, v.other_started);
+  }
+  if (ai.defend_at >= 0.0 && v.time >= ai.defend_at) {
+    const bool can = !v.punching && v.free;
+    ai.defend_at = -1.0;
+    if (can && walker.request_clip(ai.defend_with)) {
+      ai.last_request = ai.defend_with;
+      return nullptr;
+    }
+  }
+  // Combinations: the punch playing asked for another; asked as soon as it plays (the graph takes the transition
+  // when it can).
+  if (ai.follow_up && v.punching && !walker.has_plan() && v.in_range) {
+    ai.follow_up = false;
+    const char* p = pick_punch(ai);
+    if (walker.request_clip(p)) {
+      ai.last_request = p;
+      ai.aim_body = ai.rng.uniform() < ai.style.body_share;
+      return p;
+    }
+  }
+  // Footwork: keep fighting distance with the graph's steps (not too often: a step takes ~0.3 s and settles).
+  if (v.free && (v.too_far || v.too_close) && v.time >= ai.next_step) {
+    ai.next_step = v.time + 2.0;
+    const char* step = v.too_far ? "step_forward" : "step_back";
+    if (walker.request_clip(step)) ai.last_request = step;
+    return nullptr;
+  }
+  if (!v.free || !v.in_range || v.time < ai.next_attack) return nullptr;
+  // Poisson attempts: the next one an exponential wait away (at least 0.35 s: a punch's own length).
+  const double rate = std::max(1e-3, ai.style.attack_rate * v.slow);
+  ai.next_attack = v.time + std::max(0.35, -std::log(1.0 - ai.rng.uniform()) / rate);
+  const char* p = pick_punch(ai);
+  if (!walker.request_clip(p)) return nullptr;
+  ai.last_request = p;
+  ai.follow_up = ai.rng.uniform() < ai.style.combo;
+  ai.aim_body = ai.rng.uniform() < ai.style.body_share;
+  return p;
+}
+
+}  // namespace boxing

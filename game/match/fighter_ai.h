@@ -1,0 +1,62 @@
+#pragma once
+// The opponent that decides: per boxer, seeded, it steers the motion graph (GraphWalker::request_clip) to punch when
+// in range and the graph allows (the walk is in guard or footwork with no plan pending), follows a punch with
+// another at once now and then (combinations), and when the other boxer's punch starts it defends with a
+// probability after a human reaction time (~0.2 s; visual simple reaction times of trained athletes are 0.15-0.25 s):
+// a block, a slip or a duck, chosen for the punch coming (hooks are ducked or blocked, straights slipped or blocked).
+// A few style parameters per boxer (aggression, defence, favourite punches) drawn from the seed.
+#include <array>
+#include <string>
+
+#include "game/rng.h"
+
+namespace eng::anim {
+class GraphWalker;
+}
+
+namespace boxing {
+
+inline constexpr std::array<const char*, 7> kPunchClips = {"jab",         "cross",         "lead_hook",      "rear_hook",
+                                                           "lead_uppercut", "rear_uppercut", "combo_jab_cross"};
+
+struct FighterStyle {
+  double attack_rate = 0.8;  // punch attempts per second while in range and free to act (Poisson)
+  double combo = 0.3;        // probability that a punch is followed at once by another
+  double defence = 0.4;      // probability of defending a punch seen starting
+  double reaction_s = 0.2;   // s from the other's punch starting to the defence being asked for
+  double body_share = 0.25;  // share of punches aimed at the torso (the rest at the head)
+  std::array<double, kPunchClips.size()> punch_weight{};  // favourite punches (relative)
+};
+
+// A style drawn from the seed: aggression 1.0-1.6 attempts/s, defence 0.25-0.55, reaction 0.18-0.26 s, and two
+// favourite punches weighted up.
+FighterStyle draw_fighter_style(Rng& rng);
+
+struct FighterAi {
+  Rng rng{1};
+  FighterStyle style;
+  double next_attack = 1.0;   // s, simulation time of the next attempt
+  bool follow_up = false;     // the punch playing asked for a combination
+  double defend_at = -1.0;    // s, a defence asked for at this time (< 0 none)
+  double next_step = 0.0;     // s, the earliest next footwork request
+  const char* defend_with = nullptr;
+  const char* last_request = nullptr;  // the clip last asked for (for the report / tests)
+  bool aim_body = false;               // the next / current punch goes to the torso
+};
+
+// What the AI sees this tick.
+struct FighterView {
+  double time = 0.0;
+  bool free = false;           // in guard or footwork, no plan pending, standing (not stunned out, not down)
+  bool punching = false;       // a punch clip is playing
+  bool in_range = false;       // the other's head within reach of a straight punch
+  bool too_far = false;        // out of reach: step in
+  bool too_close = false;      // crowded: step out
+  const char* other_started = nullptr;  // the punch the other boxer started this tick (nullptr: none)
+  double slow = 1.0;           // attempts rate scale (a stunned boxer punches less)
+};
+
+// One tick of decisions; steers the walker. Returns the punch asked for this tick (nullptr none).
+const char* fighter_ai_tick(FighterAi& ai, eng::anim::GraphWalker& walker, const FighterView& view, double dt);
+
+}  // namespace boxing

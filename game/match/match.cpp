@@ -1,0 +1,478 @@
+#include "game/match/match.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "engine/anim/motion_graph.h"
+#include "game/match/punch_aim.h"
+#include "engine/control/servo/person_space.h"
+#include "game/world.h"
+#include "game/character_builder.h"
+
+namespace boxing {
+
+namespace {
+
+using eng::anim::Clip;
+
+constexpr double kFallWithoutHitWindow = 1.5;  // s: a fall this long after a landed hit is the hit's (issue 15)
+// m: punches aim this far THROUGH the target's centre (a boxer hits through the target: the glove meets it while
+// still accelerating, not at the end of its reach where it has slowed to a stop).
+constexpr double kAimThrough = 0.2;
+// m: a straight punch's glove centre ahead of the chest at full extension (measured from the desired pose at the
+// jab's impact frame: 0.74 m).
+constexpr double kReach = 0.74;
+
+const Clip* clip_of(const World& w, const Boxer& b) {
+  const eng::anim::GraphWalker* walker = const_cast<Boxer&>(b).source.walker();
+  return walker ? &w.graph.clips[walker->current_clip_index()] : nullptr;
+}
+
+bool is_punch(const Clip* c) { return c && c->has_tag("punch") && c->glove >= 0; }
+
+// A bone's centre of mass in the world (m).
+Eigen::Vector3d bone_centre(const World& w, const Boxer& b, int bone) {
+  const auto& x = w.data.x[b.bodies.body[bone]];
+  return x.p + x.R * w.boxer_desc.bones[bone].com;
+}
+
+Eigen::Vector3d body_velocity_at(const World& w, int body, const Eigen::Vector3d& p) {
+  const auto& v = w.data.v_body[body];
+  return v.tail<3>() + v.head<3>().cross(p);
+}
+
+// The boxer's facing in the world (the pelvis's forward axis, +X of the bone, on the floor; unit).
+Eigen::Vector2d facing(const World& w, const Boxer& b) {
+  const Eigen::Vector3d f = w.data.x[b.bodies.body[0]].R * Eigen::Vector3d::UnitX();
+  const Eigen::Vector2d h = f.head<2>();
+  return h.norm() > 1e-6 ? Eigen::Vector2d(h.normalized()) : Eigen::Vector2d(std::cos(b.stance.heading), std::sin(b.stance.heading));
+}
+
+double pelvis_height(const World& w, const Boxer& b) {
+  return w.data.x[b.bodies.body[0]].p.z() - std::min(b.stance.lead_top, b.stance.rear_top);
+}
+
+GetUp down_at(int boxer, double t) {
+  GetUp g;
+  g.boxer = boxer;
+  g.down_at = t;
+  return g;
+}
+
+bool standing_state(BoxerState s) { return s == BoxerState::Guard || s == BoxerState::Stunned; }
+
+void knock_down(World& w, int k, const Eigen::Vector3d& push_dir, const char* reason) {
+  Boxer& b = w.boxers[k];
+  MatchFighter& f = w.match.fighter[k];
+  const double t = w.data.time;
+  // Backward when the push goes against the boxer's facing (a punch to the face), forward otherwise (a body shot
+  // folds the boxer over it, a push from behind).
+  const bool back = push_dir.head<2>().dot(facing(w, b)) < 0.0;
+  if (eng::anim::GraphWalker* walker = b.source.walker()) walker->force_clip(back ? "fall_back" : "fall_forward");
+  b.ctl.root_spring.set_consciousness(0.0);
+  b.ctl.gain_scale = w.match.tuning.stunned_gain_scale;
+  boxer_state_enter(b.ctl.state, BoxerState::Falling, t, reason);
+  ++f.knockdowns;
+  f.getup = static_cast<int>(w.match.getups.size());
+  w.match.getups.push_back(down_at(k, t));
+  f.still = 0.0;
+}
+
+// The referee brings both boxers back to their marks once the downed one is up (a reset, as a fighting game's next
+// exchange: the boxers' steps do not carry them, arena.h, and a fall and get-up leave a boxer up to 0.8 m off its
+// mark, out of reach). Each body is set on its desired pose moved onto its mark, at rest; controllers start over.
+void back_to_marks(World& w) {
+  for (Boxer& b : w.boxers) {
+    // Facing the opponent again: the walk's fall and get-up clips may have turned its root.
+    const double turn = std::remainder(b.stance.heading - eng::control::heading_of(b.desired.pose.rotation[0]), 2.0 * M_PI);
+    b.ctl.yaw_offset += turn;
+    b.desired.pose.rotation[0] = (Eigen::AngleAxisd(turn, Eigen::Vector3d::UnitZ()) * b.desired.pose.rotation[0]).normalized();
+    const Eigen::Vector2d shift = b.ctl.mark - b.desired.pose.root_position.head<2>();
+    b.ctl.anchor += shift;
+    b.desired.pose.root_position.head<2>() += shift;
+    set_character_pose(w.model, w.data, b.bodies, w.boxer_desc, b.desired.pose.root_position, b.desired.pose.rotation);
+    b.ctl.have_support_base = false;
+    for (auto& s : b.ctl.step) s.active = false;
+    for (auto& g : b.ctl.gate) g = {};
+  }
+  ++w.match.resets;
+}
+
+// A landed punch's impulse is summed over the touch; then the damage, the reaction or the knockdown.
+void resolve_landing(World& w, int attacker) {
+  Match& mt = w.match;
+  MatchFighter& fa = mt.fighter[attacker];
+  PunchEvent& e = mt.events[fa.landing];
+  fa.landing = -1;
+  const int k = 1 - attacker;
+  Boxer& def = w.boxers[k];
+  MatchFighter& fd = mt.fighter[k];
+  const bool head = e.hit_part == "head";
+  e.damage = e.impulse * (head ? mt.tuning.head_damage_per_ns : mt.tuning.body_damage_per_ns);
+  def.ctl.root_spring.hit(def.settings.root_params, e.damage);
+  fd.last_hit_at = w.data.time;
+  if (!standing_state(def.ctl.state.state)) return;
+  if (mt.over) return;
+  const Eigen::Vector3d dir = bone_centre(w, def, 0) - bone_centre(w, w.boxers[attacker], 0);
+  if (e.damage >= mt.tuning.knockdown_damage || def.ctl.root_spring.consciousness() < mt.tuning.knockdown_below) {
+    knock_down(w, k, e.hit_part == "head" ? dir : Eigen::Vector3d(-dir), "knocked down by a punch");
+    return;
+  }
+  if (eng::anim::GraphWalker* walker = def.source.walker()) walker->force_clip(head ? "hit_head" : "hit_body");
+}
+
+// Where to hit: points on the opponent's head (face, chin, both temples, crown) or torso (solar plexus, both sides
+// of the ribs), in the bone's frame (+X forward, +Y left, +Z up); the one the guard covers least along the punch's
+// approach is chosen: straight punches come from the striking shoulder, hooks from the side of the striking hand at the
+// target's height, uppercuts from below. Clearance = the least distance between the approach line and the opponent's
+// gloves and forearms (spheres of their capsules' radii; two along each forearm), ties broken by the seeded AI. A punch
+// can still be blocked: the guard moves while it flies, and a tight guard leaves no opening.
+void choose_opening(World& w, int k, const Clip& c, bool body) {
+  const Boxer& b = w.boxers[k];
+  const Boxer& o = w.boxers[1 - k];
+  MatchFighter& f = w.match.fighter[k];
+  const auto& skel = w.boxer_desc.skeleton;
+  const int bone = skel.find(body ? "chest" : "head");
+  static const Eigen::Vector3d kHead[] = {{0.09, 0, 0.0}, {0.07, 0, -0.07}, {0.03, 0.08, 0.02}, {0.03, -0.08, 0.02},
+                                          {0.05, 0, 0.09}};
+  static const Eigen::Vector3d kTorso[] = {{0.12, 0, -0.08}, {0.08, 0.13, -0.05}, {0.08, -0.13, -0.05}};
+  const Eigen::Vector3d* cand = body ? kTorso : kHead;
+  const int n = body ? 3 : 5;
+  const int shoulder_bone = skel.parent[skel.parent[c.glove]];
+  const Eigen::Vector3d shoulder = w.data.x[b.bodies.body[shoulder_bone]].p;
+  const bool hook = c.name.find("hook") != std::string::npos, uppercut = c.name.find("uppercut") != std::string::npos;
+  // The striking hand's side of the attacker (its left for glove_l), horizontal.
+  const Eigen::Matrix3d& Ra = w.data.x[b.bodies.body[0]].R;
+  const Eigen::Vector3d fwd = Eigen::Vector3d(Ra(0, 0), Ra(1, 0), 0.0).normalized();
+  const Eigen::Vector3d left = Eigen::Vector3d::UnitZ().cross(fwd);
+  const bool left_hand = skel.name[c.glove].back() == 'l';
+  // The opponent's guard: gloves and forearms (sampled along the forearm).
+  Eigen::Vector3d guard[8];
+  double radius[8];
+  int ng = 0;
+  for (const char* name : {"glove_l", "glove_r", "forearm_l", "forearm_r"}) {
+    const int gb = skel.find(name);
+    if (gb < 0) continue;
+    const auto& x = w.data.x[o.bodies.body[gb]];
+    if (name[0] == 'g') {
+      guard[ng] = x.p + x.R * w.boxer_desc.bones[gb].com, radius[ng++] = 0.07;
+    } else {
+      guard[ng] = x.p + x.R * (0.5 * w.boxer_desc.bones[gb].com), radius[ng++] = 0.05;
+      guard[ng] = x.p + x.R * (1.5 * w.boxer_desc.bones[gb].com), radius[ng++] = 0.05;
+    }
+  }
+  const auto& xt = w.data.x[o.bodies.body[bone]];
+  const Eigen::Vector3d centre = w.boxer_desc.bones[bone].com;
+  double best = -1e9;
+  for (int i = 0; i < n; ++i) {
+    const Eigen::Vector3d p = xt.p + xt.R * (centre + cand[i]);
+    Eigen::Vector3d from = shoulder;
+    if (hook) from = p + 0.35 * (left_hand ? left : Eigen::Vector3d(-left)) - 0.1 * fwd;
+    if (uppercut) from = p - Eigen::Vector3d(0, 0, 0.35) - 0.15 * fwd;
+    const Eigen::Vector3d d = p - from;
+    double clear = 1e9;
+    for (int g = 0; g < ng; ++g) {
+      const double s = std::clamp((guard[g] - from).dot(d) / d.squaredNorm(), 0.0, 1.0);
+      clear = std::min(clear, (from + s * d - guard[g]).norm() - radius[g]);
+    }
+    clear += 0.01 * f.ai.rng.uniform();
+    if (clear > best) {
+      best = clear, f.aim_bone = bone, f.aim_local = centre + cand[i];
+      f.aim_dir_local = xt.R.transpose() * d.normalized();  // the approach, kept in the target's frame
+    }
+  }
+}
+
+// Punches starting (clip changes) and the AI's view of the other's.
+void track_punches(World& w, const char* started[2]) {
+  Match& mt = w.match;
+  for (int k = 0; k < 2; ++k) {
+    Boxer& b = w.boxers[k];
+    MatchFighter& f = mt.fighter[k];
+    eng::anim::GraphWalker* walker = b.source.walker();
+    started[k] = nullptr;
+    if (!walker) continue;
+    const int idx = walker->current_clip_index();
+    if (idx == f.last_clip) continue;
+    f.last_clip = idx;
+    f.open_punch = -1;
+    const Clip& c = w.graph.clips[idx];
+    if (!is_punch(&c) || !standing_state(b.ctl.state.state)) continue;
+    ++f.thrown;
+    PunchEvent e;
+    e.t = w.data.time;
+    e.boxer = k;
+    e.punch = c.name;
+    e.target = f.ai.aim_body ? "torso" : "head";
+    f.open_punch = static_cast<int>(mt.events.size());
+    mt.events.push_back(std::move(e));
+    choose_opening(w, k, c, f.ai.aim_body);
+    started[k] = c.name.c_str();
+  }
+}
+
+// The solver's hit events: a punch's striking glove on the opponent.
+void read_hits(World& w) {
+  Match& mt = w.match;
+  const double t = w.data.time;
+  for (const auto& h : w.data.hit_events) {
+    const BodyOwner& oa = mt.owners[h.body_a];
+    const BodyOwner& ob = mt.owners[h.body_b];
+    if (oa.boxer < 0 || ob.boxer < 0 || oa.boxer == ob.boxer) continue;
+    for (int side = 0; side < 2; ++side) {
+      const BodyOwner& att = side == 0 ? oa : ob;
+      const BodyOwner& def = side == 0 ? ob : oa;
+      MatchFighter& f = mt.fighter[att.boxer];
+      if (att.part != BodyPart::Glove || f.open_punch < 0) continue;
+      const Clip* c = clip_of(w, w.boxers[att.boxer]);
+      if (!is_punch(c) || c->glove != att.bone) continue;  // the other glove, or not punching
+      PunchEvent& e = mt.events[f.open_punch];
+      if (!e.hit_part.empty()) continue;  // the punch's first touch decided it
+      e.hit_part = body_part_name(def.part);
+      if (const Clip* dc = clip_of(w, w.boxers[def.boxer])) e.other_clip = dc->name;
+      e.speed = h.approach_speed;
+      if (def.part == BodyPart::Glove || def.part == BodyPart::Arm) {
+        e.blocked = true;
+      } else if ((def.part == BodyPart::Head || def.part == BodyPart::Torso) && h.approach_speed >= mt.tuning.land_speed) {
+        e.landed = true;
+        ++f.landed;
+        f.landing = f.open_punch;
+        f.landing_until = t + mt.tuning.impact_window;
+        e.impulse = 0.0;  // summed from the touching pairs below, this step included
+      }
+    }
+  }
+  // Landed punches sum the impulse between the striking glove and the opponent over the impact window.
+  for (int k = 0; k < 2; ++k) {
+    MatchFighter& f = mt.fighter[k];
+    if (f.landing < 0) continue;
+    PunchEvent& e = mt.events[f.landing];
+    const Clip* c = clip_of(w, w.boxers[k]);
+    const int glove_body = c && c->glove >= 0 ? w.boxers[k].bodies.body[c->glove] : -1;
+    for (const auto& tp : w.data.touching) {
+      const BodyOwner& oa = mt.owners[tp.body_a];
+      const BodyOwner& ob = mt.owners[tp.body_b];
+      const bool pair = (tp.body_a == glove_body && ob.boxer == 1 - k) || (tp.body_b == glove_body && oa.boxer == 1 - k);
+      if (pair) e.impulse += tp.impulse;
+    }
+    if (t >= f.landing_until) resolve_landing(w, k);
+  }
+}
+
+// Consciousness -> stunned; falls; lying still -> the stand-up; up -> guard; the count.
+void referee(World& w) {
+  Match& mt = w.match;
+  const MatchTuning& tu = mt.tuning;
+  const double t = w.data.time, dt = kPhysicsDt;
+  const auto& skel = w.boxer_desc.skeleton;
+  for (int k = 0; k < 2; ++k) {
+    Boxer& b = w.boxers[k];
+    MatchFighter& f = mt.fighter[k];
+    BoxerStateMachine& s = b.ctl.state;
+    const double c = b.ctl.root_spring.consciousness();
+    if (s.state == BoxerState::Guard && c < tu.stun_below) {
+      boxer_state_enter(s, BoxerState::Stunned, t, "consciousness low");
+      b.ctl.gain_scale = tu.stunned_gain_scale;
+    } else if (s.state == BoxerState::Stunned && c >= tu.stun_below + 0.05) {
+      boxer_state_enter(s, BoxerState::Guard, t, "recovered");
+      b.ctl.gain_scale = 1.0;
+    }
+    // A fall the match did not call (detected Down from Guard / Stunned this tick).
+    if (s.state == BoxerState::Down && s.since == t && f.getup < 0) {
+      if (t - f.last_hit_at > kFallWithoutHitWindow) ++f.falls_without_hit;
+      else ++f.knockdowns;
+      f.getup = static_cast<int>(mt.getups.size());
+      mt.getups.push_back(down_at(k, t));
+      b.ctl.root_spring.set_consciousness(0.0);
+      f.still = 0.0;
+    }
+    if (f.getup < 0) continue;
+    GetUp& g = mt.getups[f.getup];
+    const int pelvis = b.bodies.body[0];
+    const double speed = body_velocity_at(w, pelvis, w.data.x[pelvis].p).norm();
+    if (s.state == BoxerState::Down) {
+      f.still = speed < tu.still_speed ? f.still + dt : 0.0;
+      if (f.still >= tu.still_time && t - g.down_at >= tu.min_down_time && !mt.over) {
+        // Lying on the back: the chest's front (+X of the bone) looks up.
+        const int chest = skel.find("chest");
+        const Eigen::Vector3d front = w.data.x[b.bodies.body[chest >= 0 ? chest : 0]].R * Eigen::Vector3d::UnitX();
+        g.lying = front.z() > 0.0 ? "back" : "front";
+        if (eng::anim::GraphWalker* walker = b.source.walker()) walker->force_clip(g.lying == "back" ? "getup_back" : "getup_front");
+        b.ctl.root_spring.set_consciousness(0.6);
+        b.ctl.stand_up_from = w.data.x[pelvis].p;
+        boxer_state_enter(s, BoxerState::GettingUp, t, "getting up");
+      }
+    } else if (s.state == BoxerState::GettingUp) {
+      g.assist_sq_dt += b.ctl.root_torque.squaredNorm() * dt;
+      g.assist_force_sq_dt += b.ctl.root_force.squaredNorm() * dt;
+      g.assist_time += dt;
+      const Clip* cl = clip_of(w, b);
+      // Up: guard playing, the pelvis at standing height, both feet on the ground and the body settled (the QP takes
+      // a boxer over only once it stands).
+      const bool up = cl && cl->has_tag("guard") && pelvis_height(w, b) >= tu.up_height * s.standing_height &&
+                      b.ctl.contacts.support[0] && b.ctl.contacts.support[1] && speed < tu.still_speed;
+      f.settled = up ? f.settled + dt : 0.0;
+      if (f.settled >= tu.settle_time) {
+        boxer_state_enter(s, BoxerState::Guard, t, "up");
+        b.ctl.gain_scale = 1.0;
+        g.up_at = t;
+        f.getup = -1;
+        back_to_marks(w);
+      }
+    }
+    // The count: not up in count_seconds is a knock-out.
+    if (f.getup >= 0 && !mt.over && t - g.down_at > tu.count_seconds) {
+      mt.over = true;
+      mt.result = "KO: boxer " + std::to_string(1 - k) + " wins (boxer " + std::to_string(k) + " not up at " +
+                  std::to_string(static_cast<int>(tu.count_seconds)) + ")";
+    }
+  }
+}
+
+}  // namespace
+
+void match_setup(World& w) {
+  Match& mt = w.match;
+  mt.active = true;
+  mt.owners = body_owners(static_cast<int>(w.model.bodies.size()), w.boxers, w.boxer_desc.skeleton);
+  mt.round_seconds = w.options.round_seconds;
+  for (int k = 0; k < 2 && k < static_cast<int>(w.boxers.size()); ++k) {
+    MatchFighter& f = mt.fighter[k];
+    w.boxers[k].ctl.mark = w.boxers[k].desired.pose.root_position.head<2>();  // where the pelvis starts
+    f.ai.rng = Rng(w.options.seed * 0x9E3779B97F4A7C15ull + 0xF16A7ull + static_cast<uint64_t>(k));
+    f.ai.style = draw_fighter_style(f.ai.rng);
+    f.ai.next_attack = 1.0 + f.ai.rng.uniform(0.0, 1.0);  // both settle into guard first
+    f.player = w.options.player == k;
+    Boxer& b = w.boxers[k];
+    // The AI (or the player) decides what is thrown: the walk takes no random transition (a punch, a slip) of its own
+    // and guard loops until asked for something else; continuations, hits and knockdowns go on as before.
+    if (eng::anim::GraphWalker* walker = b.source.walker()) {
+      walker->transition_probability = 0.0;
+      walker->loop_probability = 1.0;
+    }
+    // No leash: the AI keeps the distance (its steps, like the leash's, move the clip, not the feet: arena.h).
+    b.source.set_leash(1e9);
+    // Consciousness: the match decides knockdowns (no outright knock-out threshold); recovery is slow, so damage
+    // accumulates over a round.
+    b.settings.root_params.knockout_threshold = 1e9;
+    b.settings.root_params.stun_time = mt.tuning.recovery_delay;
+    b.settings.root_params.recovery_rate = mt.tuning.recovery_rate;
+  }
+}
+
+void match_before_control(World& w) {
+  Match& mt = w.match;
+  if (!mt.active || w.boxers.size() < 2) return;
+  const double t = w.data.time;
+  const auto& skel = w.boxer_desc.skeleton;
+  const int head = skel.find("head"), chest = skel.find("chest");
+  for (int k = 0; k < 2; ++k) {
+    Boxer& b = w.boxers[k];
+    const Boxer& o = w.boxers[1 - k];
+    MatchFighter& f = mt.fighter[k];
+    eng::anim::GraphWalker* walker = b.source.walker();
+    if (!walker) continue;
+    const Clip& c = w.graph.clips[walker->current_clip_index()];
+    const bool standing = standing_state(b.ctl.state.state);
+    // The aim: the punch playing bends the striking arm onto the opponent's head or torso, through it by a few cm
+    // (the servo lags its target: aimed at the surface, the glove would arrive slow).
+    b.ctl.aim.active = standing && is_punch(&c) && f.open_punch >= 0 && f.aim_bone >= 0;
+    if (b.ctl.aim.active) {
+      const auto& xt = w.data.x[o.bodies.body[f.aim_bone]];
+      b.ctl.aim.glove = c.glove;
+      b.ctl.aim.target = xt.p + xt.R * (f.aim_local + kAimThrough * f.aim_dir_local);
+      b.ctl.aim.weight = aim_weight(walker->clip_time(), c.impact_time, c.duration());
+    }
+    if (f.player || mt.over) continue;
+    FighterView v;
+    v.time = t;
+    v.punching = is_punch(&c);
+    v.free = standing && !walker->has_plan() && c.has_tag("guard");
+    // Distance: the opponent's head from this boxer's chest, on the floor. A straight punch puts the glove's centre
+    // about kReach ahead of the chest at full extension (measured: 0.74 m); in range within a head's depth of that.
+    const double dist = (bone_centre(w, o, head) - bone_centre(w, b, chest)).head<2>().norm();
+    const bool opponent_up = standing_state(o.ctl.state.state);  // no hitting a downed man
+    v.in_range = dist < kReach + 0.08 && opponent_up;
+    v.too_far = dist > kReach + 0.03 && opponent_up;
+    v.too_close = dist < kReach - 0.25;
+    v.other_started = f.saw_punch;
+    v.slow = b.ctl.state.state == BoxerState::Stunned ? 0.4 : 1.0;
+    f.saw_punch = nullptr;
+    fighter_ai_tick(f.ai, *walker, v, kPhysicsDt);
+  }
+}
+
+void match_after_step(World& w) {
+  Match& mt = w.match;
+  if (!mt.active || w.boxers.size() < 2) return;
+  const char* started[2];
+  track_punches(w, started);
+  for (int k = 0; k < 2; ++k) mt.fighter[1 - k].saw_punch = started[k];
+  for (int k = 0; k < 2; ++k) {  // the striking glove's speed over the punch
+    const MatchFighter& f = mt.fighter[k];
+    const Clip* c = clip_of(w, w.boxers[k]);
+    if (f.open_punch < 0 || !is_punch(c)) continue;
+    const int body = w.boxers[k].bodies.body[c->glove];
+    PunchEvent& e = mt.events[f.open_punch];
+    e.peak_speed = std::max(e.peak_speed, body_velocity_at(w, body, w.data.x[body].p).norm());
+  }
+  read_hits(w);
+  referee(w);
+}
+
+nlohmann::json match_report(const World& w) {
+  const Match& mt = w.match;
+  nlohmann::json events = nlohmann::json::array();
+  for (const PunchEvent& e : mt.events)
+    events.push_back({{"t", e.t},
+                      {"boxer", e.boxer},
+                      {"punch", e.punch},
+                      {"target", e.target},
+                      {"landed", e.landed},
+                      {"blocked", e.blocked},
+                      {"hit", e.hit_part},
+                      {"other_clip", e.other_clip},
+                      {"speed", e.speed},
+                      {"peak_speed", e.peak_speed},
+                      {"impulse", e.impulse},
+                      {"damage", e.damage}});
+  nlohmann::json getups = nlohmann::json::array();
+  for (const GetUp& g : mt.getups)
+    getups.push_back({{"boxer", g.boxer},
+                      {"down_at_s", g.down_at},
+                      {"up_at_s", g.up_at >= 0.0 ? nlohmann::json(g.up_at) : nlohmann::json(nullptr)},
+                      {"lying", g.lying.empty() ? nlohmann::json(nullptr) : nlohmann::json(g.lying)},
+                      {"root_assist_rms_nm", g.assist_time > 0 ? std::sqrt(g.assist_sq_dt / g.assist_time) : 0.0},
+                      {"root_assist_force_rms_n", g.assist_time > 0 ? std::sqrt(g.assist_force_sq_dt / g.assist_time) : 0.0},
+                      {"stand_up_s", g.assist_time}});
+  auto pair = [&mt](auto get) { return nlohmann::json::array({get(mt.fighter[0]), get(mt.fighter[1])}); };
+  std::string result = mt.result;
+  if (result.empty()) {
+    const int a = mt.fighter[0].landed, b = mt.fighter[1].landed;
+    result = a == b ? "draw on points (" + std::to_string(a) + "-" + std::to_string(b) + " landed)"
+                    : "points: boxer " + std::to_string(a > b ? 0 : 1) + " wins (" + std::to_string(a) + "-" +
+                          std::to_string(b) + " landed)";
+  }
+  std::vector<double> speeds;
+  for (const PunchEvent& e : mt.events)
+    if (e.landed) speeds.push_back(e.speed);
+  std::sort(speeds.begin(), speeds.end());
+  return {{"punches_thrown", pair([](const MatchFighter& f) { return f.thrown; })},
+          {"punches_landed", pair([](const MatchFighter& f) { return f.landed; })},
+          {"knockdowns", pair([](const MatchFighter& f) { return f.knockdowns; })},
+          {"falls_without_hit", pair([](const MatchFighter& f) { return f.falls_without_hit; })},
+          {"landed_speed_median", speeds.empty() ? 0.0 : speeds[speeds.size() / 2]},
+          {"consciousness", pair([&w](const MatchFighter& f) {
+             const int k = static_cast<int>(&f - &w.match.fighter[0]);
+             return w.boxers[k].ctl.root_spring.consciousness();
+           })},
+          {"round_seconds", mt.round_seconds},
+          {"resets_to_marks", mt.resets},
+          {"round", static_cast<int>(w.data.time / mt.round_seconds) + 1},
+          {"getups", getups},
+          {"result", result},
+          {"events", events}};
+}
+
+}  // namespace boxing

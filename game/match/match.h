@@ -1,0 +1,117 @@
+#pragma once
+// The match (--scenario match): two boxers fight. Each tick after the physics step (match_after_step):
+//   1. punches: a boxer entering a clip tagged "punch" has thrown one (an event opens; its target is chosen);
+//   2. hits: the solver's hit events (engine/physics/data.h HitEvent) between the punch's striking glove and the
+//      opponent: on the head or torso at an approach speed of at least MatchTuning::land_speed it LANDED, on a glove
+//      or an arm it was BLOCKED. The contact's impulse over the next impact_window seconds is the punch's impulse;
+//      damage = impulse x location factor (head > body) lowers the opponent's consciousness (the root spring's,
+//      engine/control/servo/root_spring.h, whose assist and the servo gains scale with it);
+//   3. reactions: a landed punch forces the reaction clip (hit_head / hit_body), a heavy one or too little
+//      consciousness left a knockdown (fall_back / fall_forward by the push's direction): the body falls limp the way
+//      the hit and the crates make it fall; nothing is scripted but the clip;
+//   4. the count: once down and lying still, the stand-up is chosen from the lying pose (getup_back / getup_front)
+//      and tracked physically with a reported root assist; up before count_seconds fights on, else a knock-out;
+//   5. the AI (fighter_ai.h) steers each AI boxer's motion graph: punches when in range, defence after a reaction
+//      time when the other's punch starts.
+// Aimed punches: while a punch plays, the glove's desired path is bent toward the opponent's actual head or body,
+// full at the clip's impact frame (punch_aim.h); the servo and balance QP track it.
+#include <Eigen/Core>
+#include <array>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "game/match/body_parts.h"
+#include "game/match/fighter_ai.h"
+
+namespace boxing {
+
+struct World;
+
+// Measured and chosen in docs/decisions/match-hits.md.
+struct MatchTuning {
+  double land_speed = 2.0;         // m/s, a glove's approach speed on head / torso for a punch to count as landed
+  double impact_window = 0.05;     // s, the contact impulse summed this long after the first touch
+  double head_damage_per_ns = 0.035;  // consciousness lost per N s of impulse on the head
+  double body_damage_per_ns = 0.015;  // ... on the torso
+  double knockdown_damage = 0.35;     // one hit taking this much is a knockdown
+  double knockdown_below = 0.15;     // consciousness below this after a hit is a knockdown
+  double stun_below = 0.6;           // stunned (lower gains, slower punches) below this consciousness
+  double stunned_gain_scale = 0.7;   // servo gains scale when stunned
+  double recovery_rate = 0.01;       // consciousness per second recovered (after recovery_delay)
+  double recovery_delay = 1.0;       // s after the last hit
+  double still_speed = 0.4;          // m/s, pelvis speed under which a downed boxer lies still
+  double still_time = 0.6;           // s lying still before the stand-up starts
+  double min_down_time = 1.2;        // s down before the stand-up at the earliest
+  double count_seconds = 10.0;       // the referee's count: not up in time = knock-out
+  double up_height = 0.8;            // share of the standing pelvis height that counts as up (with guard playing)
+  double settle_time = 0.5;          // s up and still before the fight goes on
+};
+
+struct PunchEvent {
+  double t = 0.0;
+  int boxer = 0;
+  std::string punch;
+  std::string target = "head";  // aimed at: head | torso
+  bool landed = false, blocked = false;
+  std::string hit_part;   // what it touched first: head | torso | glove | arm ("" = missed)
+  std::string other_clip;  // what the opponent was doing then (its clip)
+  double speed = 0.0;     // m/s, approach speed at the first touch
+  double peak_speed = 0.0;  // m/s, the striking glove's fastest over the punch (world)
+  double impulse = 0.0;   // N s over impact_window
+  double damage = 0.0;
+};
+
+struct GetUp {
+  int boxer = 0;
+  double down_at = 0.0, up_at = -1.0;  // s (up_at < 0: not up)
+  std::string lying;                   // back | front ("" until chosen)
+  double assist_sq_dt = 0.0, assist_time = 0.0;  // root assist torque^2 dt over the stand-up
+  double assist_force_sq_dt = 0.0;               // root assist force^2 dt
+};
+
+struct MatchFighter {
+  FighterAi ai;
+  bool player = false;           // --player: the keyboard steers this one (no AI)
+  int thrown = 0, landed = 0, knockdowns = 0, falls_without_hit = 0;
+  int last_clip = -1;            // the graph clip of the last tick
+  int open_punch = -1;           // events index of the punch now playing (-1 none)
+  int landing = -1;              // events index of a landed punch still summing its impulse (on the opponent)
+  double landing_until = 0.0;
+  double last_hit_at = -1e9;     // last landed hit ON this boxer
+  double still = 0.0;            // s lying still
+  double settled = 0.0;          // s up and still (the end of a stand-up)
+  int getup = -1;                // getups index of the current knockdown
+  bool stunned = false;
+  const char* saw_punch = nullptr;  // the other boxer started this punch on the last tick (for the AI)
+  // The punch's target: a point fixed to the opponent's head or chest (bone frame), the opening chosen at the punch's
+  // start (choose_opening) and followed as the opponent moves.
+  int aim_bone = -1;
+  Eigen::Vector3d aim_local = Eigen::Vector3d::Zero();
+  Eigen::Vector3d aim_dir_local = Eigen::Vector3d::UnitX();  // the punch's approach direction (same frame)
+};
+
+struct Match {
+  bool active = false;
+  MatchTuning tuning;
+  std::vector<BodyOwner> owners;
+  std::array<MatchFighter, 2> fighter;
+  std::vector<PunchEvent> events;
+  std::vector<GetUp> getups;
+  double round_seconds = 180.0;
+  bool over = false;
+  int resets = 0;  // times the referee brought the boxers back to their marks (after a get-up)
+  std::string result;  // "" while fighting; set by a knock-out (or at the report: points)
+};
+
+// After the boxers exist (scenario setup + place): the body map, the AI styles (seeded), consciousness dynamics.
+void match_setup(World& w);
+// Before the boxers' control: aims the punches now playing (punch_aim.h) and runs the AI.
+void match_before_control(World& w);
+// After the physics step and measurements: punches, hits, damage, reactions, knockdowns, the count, get-ups.
+void match_after_step(World& w);
+// The report's "match" block (README: punches_thrown / landed, knockdowns, getups, falls_without_hit, result,
+// events).
+nlohmann::json match_report(const World& w);
+
+}  // namespace boxing

@@ -1,0 +1,123 @@
+// The match (game/match/): punches are counted from the clips the AI asks for, land only through the solver's hit
+// events (the striking glove on head or torso at speed; glove or arm = blocked), a knocked-down boxer gets up from the
+// way it lies, and the same seed gives the same fight.
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "game/match/body_parts.h"
+#include "game/match/fighter_ai.h"
+#include "game/match/punch_aim.h"
+#include "game/world.h"
+
+namespace boxing {
+namespace {
+
+std::unique_ptr<World> run_match(uint64_t seed, double seconds) {
+  Options o;
+  o.headless = true;
+  o.scenario_id = Scenario::Match;
+  o.scenario = "match";
+  o.seed = seed;
+  auto w = make_world(o);
+  EXPECT_TRUE(w) << w.error();
+  if (!w) return nullptr;
+  for (int i = 0; i < static_cast<int>(seconds * 240); ++i) step_world(**w);
+  return std::move(*w);
+}
+
+TEST(Match, PunchesLandOnlyThroughTheStrikingGloveOnHeadOrTorsoAtSpeed) {
+  auto w = run_match(1, 40.0);
+  ASSERT_TRUE(w);
+  const Match& m = w->match;
+  int thrown[2] = {0, 0}, landed[2] = {0, 0};
+  for (const PunchEvent& e : m.events) {
+    ++thrown[e.boxer];
+    if (e.landed) {
+      ++landed[e.boxer];
+      EXPECT_TRUE(e.hit_part == "head" || e.hit_part == "torso") << e.punch << " at " << e.t;
+      EXPECT_GE(e.speed, m.tuning.land_speed);
+      EXPECT_GT(e.impulse, 0.0);
+      EXPECT_GT(e.damage, 0.0);
+      EXPECT_FALSE(e.blocked);
+    }
+    if (e.blocked) {
+      EXPECT_TRUE(e.hit_part == "glove" || e.hit_part == "arm");
+    }
+    EXPECT_GT(e.peak_speed, 0.5);  // the glove moved: a punch, not a pose
+  }
+  for (int k = 0; k < 2; ++k) {
+    EXPECT_EQ(m.fighter[k].thrown, thrown[k]);
+    EXPECT_EQ(m.fighter[k].landed, landed[k]);
+    EXPECT_GE(thrown[k], 8) << "boxer " << k;  // the AI punches (about 1 attempt a second in range)
+  }
+  EXPECT_GE(landed[0] + landed[1], 3);
+  EXPECT_GT(static_cast<int>(m.events.size()), landed[0] + landed[1]);  // and not everything lands
+}
+
+TEST(Match, KnockedDownBoxerGetsUpFromTheWayItLiesWithinTheCount) {
+  auto w = run_match(1, 40.0);
+  ASSERT_TRUE(w);
+  const Match& m = w->match;
+  ASSERT_FALSE(m.getups.empty()) << "seed 1 has a knockdown in its first 40 s";
+  const GetUp& g = m.getups.front();
+  EXPECT_TRUE(g.lying == "back" || g.lying == "front");
+  ASSERT_GE(g.up_at, 0.0);
+  EXPECT_LT(g.up_at - g.down_at, m.tuning.count_seconds);
+  EXPECT_GT(g.assist_time, 0.0);  // tracked with the root assist, and it is reported
+  EXPECT_GT(g.assist_force_sq_dt, 0.0);
+  for (const MatchFighter& f : m.fighter) EXPECT_EQ(f.falls_without_hit, 0);
+  // A knockdown follows a landed punch on that boxer.
+  bool hit_before = false;
+  for (const PunchEvent& e : m.events)
+    if (e.landed && e.boxer == 1 - g.boxer && e.t <= g.down_at) hit_before = true;
+  EXPECT_TRUE(hit_before);
+}
+
+TEST(Match, SameSeedGivesTheSameFight) {
+  auto a = run_match(2, 12.0), b = run_match(2, 12.0);
+  ASSERT_TRUE(a && b);
+  EXPECT_EQ(match_report(*a).dump(), match_report(*b).dump());
+  EXPECT_FALSE(a->match.events.empty());
+}
+
+TEST(PunchAim, WeightRisesToOneAtImpactAndFallsBackOverTheRetraction) {
+  const double impact = 0.14, duration = 0.4;
+  EXPECT_EQ(aim_weight(0.0, impact, duration), 0.0);
+  EXPECT_DOUBLE_EQ(aim_weight(impact, impact, duration), 1.0);
+  EXPECT_EQ(aim_weight(impact + 0.6 * (duration - impact), impact, duration), 0.0);
+  double last = -1.0;
+  for (double t = 0.0; t <= impact; t += 0.01) {
+    EXPECT_GE(aim_weight(t, impact, duration), last);
+    last = aim_weight(t, impact, duration);
+  }
+  EXPECT_EQ(aim_weight(0.1, -1.0, duration), 0.0);  // a clip without an impact frame is not aimed
+}
+
+TEST(BodyParts, TheBoxersBonesMapToTheirParts) {
+  EXPECT_EQ(boxer_body_part("glove_l"), BodyPart::Glove);
+  EXPECT_EQ(boxer_body_part("head"), BodyPart::Head);
+  EXPECT_EQ(boxer_body_part("chest"), BodyPart::Torso);
+  EXPECT_EQ(boxer_body_part("forearm_r"), BodyPart::Arm);
+  EXPECT_EQ(boxer_body_part("shank_l"), BodyPart::Leg);
+  EXPECT_EQ(boxer_body_part("tail"), BodyPart::None);
+}
+
+TEST(FighterAi, StylesAreSeededAndWithinTheirRanges) {
+  Rng a(7), b(7), c(8);
+  const FighterStyle sa = draw_fighter_style(a), sb = draw_fighter_style(b), sc = draw_fighter_style(c);
+  EXPECT_EQ(sa.attack_rate, sb.attack_rate);
+  EXPECT_EQ(sa.punch_weight, sb.punch_weight);
+  EXPECT_NE(sa.attack_rate, sc.attack_rate);
+  for (const FighterStyle& s : {sa, sc}) {
+    EXPECT_GE(s.attack_rate, 1.0);
+    EXPECT_LE(s.attack_rate, 1.6);
+    EXPECT_GE(s.defence, 0.25);
+    EXPECT_LE(s.defence, 0.55);
+    EXPECT_GE(s.reaction_s, 0.18);
+    EXPECT_LE(s.reaction_s, 0.26);
+  }
+}
+
+}  // namespace
+}  // namespace boxing
