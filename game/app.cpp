@@ -119,6 +119,7 @@ eng::Result<HeadlessRun> run_headless(const Options& o) {
       eng::ui::ui_begin(r.ui(), in);
       draw_stats_panel({float(sim.ms.back()), r.device_name(),
                         {"t = " + std::to_string(w.data.time) + " s", "scenario " + o.scenario}});
+      if (w.match.active) draw_match_panel(match_hud(w));
       eng::ui::ui_end(r.ui());
     }
     if (auto ok = r.render(f); !ok) return eng::make_error("boxing: rendering failed: " + ok.error());
@@ -161,6 +162,15 @@ struct OrbitCamera {
     return c;
   }
 };
+
+// The player's keys in the match (README: Controls).
+constexpr std::pair<int, FightCommand> kFightKeys[] = {
+    {GLFW_KEY_J, FightCommand::Jab},          {GLFW_KEY_K, FightCommand::Cross},
+    {GLFW_KEY_U, FightCommand::LeadHook},     {GLFW_KEY_I, FightCommand::RearHook},
+    {GLFW_KEY_N, FightCommand::LeadUppercut}, {GLFW_KEY_M, FightCommand::RearUppercut},
+    {GLFW_KEY_B, FightCommand::Block},        {GLFW_KEY_A, FightCommand::SlipLeft},
+    {GLFW_KEY_D, FightCommand::SlipRight},    {GLFW_KEY_S, FightCommand::Duck},
+    {GLFW_KEY_W, FightCommand::StepForward},  {GLFW_KEY_X, FightCommand::StepBack}};
 
 int run_windowed(const Options& o) {
   auto world = make_world(o);
@@ -218,6 +228,10 @@ int run_windowed(const Options& o) {
         camera_index = (camera_index + 1) % 4;
         orbit.from(camera_preset(cameras[camera_index], w));
       }
+      // The fight keys: the first one takes over the red boxer (or the --player one) from the AI.
+      if (w.match.active)
+        for (const auto& [key, command] : kFightKeys)
+          if (win.key_pressed(key)) match_command(w, o.player >= 0 ? o.player : 0, command);
     }
     const glm::dvec2 mouse = win.mouse_position();
     if (!ui_mouse) {  // drags and the wheel over a panel are the panel's
@@ -242,10 +256,14 @@ int run_windowed(const Options& o) {
       ++frames;
     }
     if (o.seconds > 0 && w.data.time >= o.seconds) win.request_close();
-    if (overlay)
-      draw_stats_panel({render.ms.empty() ? 0.0f : float(render.ms.back()), r.device_name(),
-                        {"t = " + std::to_string(w.data.time).substr(0, 6) + " s   scenario " + o.scenario,
-                         "F12 screenshot  H overlay  G ghost  C camera  Esc quit"}});
+    if (overlay) {
+      HudStats stats{render.ms.empty() ? 0.0f : float(render.ms.back()), r.device_name(),
+                     {"t = " + std::to_string(w.data.time).substr(0, 6) + " s   scenario " + o.scenario,
+                      "F12 screenshot  H overlay  G ghost  C camera  Esc quit"}};
+      if (w.match.active) stats.lines.push_back("fight: J jab K cross U/I hooks N/M uppercuts B block A/D slip S duck W/X step");
+      draw_stats_panel(stats);
+    }
+    if (overlay && w.match.active) draw_match_panel(match_hud(w));
     eng::ui::ui_end(r.ui());
     if (win.minimized()) continue;
     const auto t1 = clock_type::now();

@@ -34,4 +34,41 @@ void draw_stats_panel(const HudStats& s) {
   ImGui::End();
 }
 
+void draw_match_panel(const MatchHud& h) {
+  const ImGuiIO& io = ImGui::GetIO();
+  const float w = 460.0f;
+  ImGui::SetNextWindowPos(ImVec2(0.5f * (io.DisplaySize.x - w), 10), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(w, h.banner.empty() ? 96.0f : 124.0f), ImGuiCond_Always);  // fixed: see above
+  ImGui::SetNextWindowBgAlpha(0.55f);
+  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoSavedSettings |
+                                 ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav |
+                                 ImGuiWindowFlags_NoInputs;
+  if (ImGui::Begin("##match", nullptr, flags)) {
+    char line[128];
+    const int secs = static_cast<int>(h.clock_s);
+    std::snprintf(line, sizeof line, "ROUND %d   %d:%02d", h.round, secs / 60, secs % 60);
+    ImGui::SetCursorPosX(0.5f * (w - ImGui::CalcTextSize(line).x));
+    ImGui::TextUnformatted(line);
+    const ImVec4 colour[2] = {ImVec4(0.85f, 0.15f, 0.12f, 1.0f), ImVec4(0.15f, 0.3f, 0.9f, 1.0f)};
+    ImGui::Columns(2, nullptr, false);
+    for (int k = 0; k < 2; ++k) {
+      const MatchHud::Side& s = h.side[k];
+      ImGui::PushStyleColor(ImGuiCol_PlotHistogram, colour[k]);
+      ImGui::ProgressBar(s.consciousness, ImVec2(-1, 14), "");
+      ImGui::PopStyleColor();
+      std::snprintf(line, sizeof line, "%s%s  landed %d/%d  down %d", k == 0 ? "RED" : "BLUE", s.player ? " (you)" : "",
+                    s.landed, s.thrown, s.knockdowns);
+      ImGui::TextUnformatted(line);
+      ImGui::TextUnformatted(s.state);
+      ImGui::NextColumn();
+    }
+    ImGui::Columns(1);
+    if (!h.banner.empty()) {
+      ImGui::SetCursorPosX(0.5f * (w - ImGui::CalcTextSize(h.banner.c_str()).x));
+      ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.2f, 1.0f), "%s", h.banner.c_str());
+    }
+  }
+  ImGui::End();
+}
+
 }  // namespace boxing

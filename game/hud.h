@@ -15,4 +15,19 @@ struct HudStats {
 // The stats panel in the top-left corner: translucent, takes no input (clicks and drags go to the scene).
 void draw_stats_panel(const HudStats& stats);
 
+// The match's panel (top centre): the round and its clock, per boxer a consciousness bar, punches landed / thrown and
+// knockdowns, and a banner (a knockdown's count, the result).
+struct MatchHud {
+  int round = 1;
+  double clock_s = 0.0;  // left in the round
+  struct Side {
+    float consciousness = 1.0f;
+    int landed = 0, thrown = 0, knockdowns = 0;
+    bool player = false;
+    const char* state = "";
+  } side[2];
+  std::string banner;
+};
+void draw_match_panel(const MatchHud& hud);
+
 }  // namespace boxing

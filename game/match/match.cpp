@@ -332,6 +332,31 @@ void referee(World& w) {
 
 }  // namespace
 
+const char* fight_command_clip(FightCommand c) {
+  switch (c) {
+    case FightCommand::None: return "";
+    case FightCommand::Jab: return "jab";
+    case FightCommand::Cross: return "cross";
+    case FightCommand::LeadHook: return "lead_hook";
+    case FightCommand::RearHook: return "rear_hook";
+    case FightCommand::LeadUppercut: return "lead_uppercut";
+    case FightCommand::RearUppercut: return "rear_uppercut";
+    case FightCommand::Block: return "block_high";
+    case FightCommand::SlipLeft: return "slip_left";
+    case FightCommand::SlipRight: return "slip_right";
+    case FightCommand::Duck: return "duck";
+    case FightCommand::StepForward: return "step_forward";
+    case FightCommand::StepBack: return "step_back";
+  }
+  return "";
+}
+
+void match_command(World& w, int k, FightCommand c) {
+  if (!w.match.active || k < 0 || k > 1) return;
+  w.match.fighter[k].player = true;
+  w.match.fighter[k].command = c;
+}
+
 void match_setup(World& w) {
   Match& mt = w.match;
   mt.active = true;
@@ -384,7 +409,17 @@ void match_before_control(World& w) {
       b.ctl.aim.target = xt.p + xt.R * (f.aim_local + kAimThrough * f.aim_dir_local);
       b.ctl.aim.weight = aim_weight(walker->clip_time(), c.impact_time, c.duration());
     }
-    if (f.player || mt.over) continue;
+    if (f.player) {
+      // The player's command, taken when the boxer stands and the walk is free of a plan (a punch asked for during
+      // another is taken once that one lets the graph go, like a buffered input in a fighting game).
+      if (f.command != FightCommand::None && standing && !walker->has_plan() && !mt.over) {
+        if (walker->request_clip(fight_command_clip(f.command))) ++f.commands_taken;
+        f.ai.aim_body = false;
+        f.command = FightCommand::None;
+      }
+      continue;
+    }
+    if (mt.over) continue;
     FighterView v;
     v.time = t;
     v.punching = is_punch(&c);
@@ -419,6 +454,27 @@ void match_after_step(World& w) {
   }
   read_hits(w);
   referee(w);
+}
+
+MatchHud match_hud(const World& w) {
+  const Match& mt = w.match;
+  MatchHud h;
+  const double t = w.data.time;
+  h.round = static_cast<int>(t / mt.round_seconds) + 1;
+  h.clock_s = std::max(0.0, h.round * mt.round_seconds - t);
+  for (int k = 0; k < 2 && k < static_cast<int>(w.boxers.size()); ++k) {
+    const MatchFighter& f = mt.fighter[k];
+    h.side[k].consciousness = static_cast<float>(w.boxers[k].ctl.root_spring.consciousness());
+    h.side[k].landed = f.landed, h.side[k].thrown = f.thrown, h.side[k].knockdowns = f.knockdowns;
+    h.side[k].player = f.player;
+    h.side[k].state = boxer_state_name(w.boxers[k].ctl.state.state);
+    if (f.getup >= 0 && !mt.over) {
+      const int count = std::min(10, static_cast<int>(t - mt.getups[f.getup].down_at) + 1);
+      h.banner = std::string(k == 0 ? "RED" : "BLUE") + " DOWN   " + std::to_string(count);
+    }
+  }
+  if (mt.over) h.banner = mt.result;
+  return h;
 }
 
 nlohmann::json match_report(const World& w) {
@@ -467,6 +523,8 @@ nlohmann::json match_report(const World& w) {
              const int k = static_cast<int>(&f - &w.match.fighter[0]);
              return w.boxers[k].ctl.root_spring.consciousness();
            })},
+          {"players", pair([](const MatchFighter& f) { return f.player; })},
+          {"player_commands_taken", pair([](const MatchFighter& f) { return f.commands_taken; })},
           {"round_seconds", mt.round_seconds},
           {"resets_to_marks", mt.resets},
           {"round", static_cast<int>(w.data.time / mt.round_seconds) + 1},

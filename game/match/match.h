@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "game/hud.h"
 #include "game/match/body_parts.h"
 #include "game/match/fighter_ai.h"
 
@@ -70,9 +71,19 @@ struct GetUp {
   double assist_force_sq_dt = 0.0;               // root assist force^2 dt
 };
 
+// What the player asks of a boxer (keys, game/app.cpp): a punch, a defence or a step; taken by the motion graph like
+// the AI's requests (when the walk can: in guard, standing).
+enum class FightCommand : uint8_t {
+  None, Jab, Cross, LeadHook, RearHook, LeadUppercut, RearUppercut, Block, SlipLeft, SlipRight, Duck, StepForward,
+  StepBack
+};
+const char* fight_command_clip(FightCommand c);  // the clip it asks for ("" for None)
+
 struct MatchFighter {
   FighterAi ai;
-  bool player = false;           // --player: the keyboard steers this one (no AI)
+  bool player = false;           // --player (or a fight key in the window): the keyboard steers this one (no AI)
+  FightCommand command = FightCommand::None;  // the player's, taken on the next tick
+  int commands_taken = 0;        // player commands the motion graph accepted
   int thrown = 0, landed = 0, knockdowns = 0, falls_without_hit = 0;
   int last_clip = -1;            // the graph clip of the last tick
   int open_punch = -1;           // events index of the punch now playing (-1 none)
@@ -110,6 +121,12 @@ void match_setup(World& w);
 void match_before_control(World& w);
 // After the physics step and measurements: punches, hits, damage, reactions, knockdowns, the count, get-ups.
 void match_after_step(World& w);
+// The player's command for boxer k (it becomes the player's from now on).
+void match_command(World& w, int k, FightCommand c);
+
+// What the match panel shows now (game/hud.h).
+MatchHud match_hud(const World& w);
+
 // The report's "match" block (README: punches_thrown / landed, knockdowns, getups, falls_without_hit, result,
 // events).
 nlohmann::json match_report(const World& w);

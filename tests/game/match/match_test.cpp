@@ -81,6 +81,32 @@ TEST(Match, SameSeedGivesTheSameFight) {
   EXPECT_FALSE(a->match.events.empty());
 }
 
+// A player's boxer (--player) takes no AI decision: with no keys pressed it throws nothing while the AI's does, and
+// a command (what a key sends) is taken by the motion graph.
+TEST(Match, PlayersBoxerPunchesOnlyOnCommand) {
+  Options o;
+  o.headless = true;
+  o.scenario_id = Scenario::Match;
+  o.seed = 3;
+  o.player = 0;
+  auto w = make_world(o);
+  ASSERT_TRUE(w) << w.error();
+  World& world = **w;
+  for (int i = 0; i < 8 * 240; ++i) step_world(world);
+  EXPECT_EQ(world.match.fighter[0].thrown, 0);
+  EXPECT_GT(world.match.fighter[1].thrown, 0);
+  for (int i = 0; i < 6 && world.match.fighter[0].commands_taken == 0; ++i) {
+    match_command(world, 0, FightCommand::Cross);
+    for (int k = 0; k < 120; ++k) step_world(world);
+  }
+  for (int i = 0; i < 240; ++i) step_world(world);
+  EXPECT_EQ(world.match.fighter[0].commands_taken, 1);
+  EXPECT_EQ(world.match.fighter[0].thrown, 1);
+  int red_crosses = 0;
+  for (const PunchEvent& e : world.match.events) red_crosses += e.boxer == 0 && e.punch == "cross";
+  EXPECT_EQ(red_crosses, 1);
+}
+
 TEST(PunchAim, WeightRisesToOneAtImpactAndFallsBackOverTheRetraction) {
   const double impact = 0.14, duration = 0.4;
   EXPECT_EQ(aim_weight(0.0, impact, duration), 0.0);
