@@ -79,6 +79,17 @@ void knock_down(World& w, int k, const Eigen::Vector3d& push_dir, const char* re
   f.still = 0.0;
 }
 
+// A boxer getting up passes through its opponent (its geoms' collision mask leaves the other boxer's group out):
+// rising where it fell, into a standing opponent, it stuck crouched against him (seeds 2, 7, 9: not up in 10 s).
+// Nobody punches a downed boxer, so no hit is lost. World::model's masks are read by every step's collision.
+void pass_through_opponent(World& w, int k, bool on) {
+  const Boxer& b = w.boxers[k];
+  const uint32_t other_group = 2u << w.boxers[1 - k].index;  // add_boxer's group
+  for (size_t i = 0; i < b.bodies.first_geom.size(); ++i)
+    for (int g = b.bodies.first_geom[i]; g < b.bodies.first_geom[i] + b.bodies.geom_count[i]; ++g)
+      w.model.geoms[g].mask = on ? ~other_group : 0xffffffffu;
+}
+
 // The referee brings both boxers back to their marks once the downed one is up (a reset, as a fighting game's next
 // exchange: the boxers' steps do not carry them, arena.h, and a fall and get-up leave a boxer up to 0.8 m off its
 // mark, out of reach). Each body is set on its desired pose moved onto its mark, at rest; controllers start over.
@@ -230,6 +241,12 @@ void read_hits(World& w) {
       PunchEvent& e = mt.events[f.open_punch];
       if (!e.hit_part.empty()) continue;  // the punch's first touch decided it
       e.hit_part = body_part_name(def.part);
+      {
+        const Boxer& ab = w.boxers[att.boxer];
+        const int gb = ab.bodies.body[att.bone];
+        const Eigen::Vector3d centre = w.data.x[gb].p + w.data.x[gb].R * w.boxer_desc.bones[att.bone].com;
+        e.fist_speed = body_velocity_at(w, gb, centre).norm();
+      }
       if (const Clip* dc = clip_of(w, w.boxers[def.boxer])) e.other_clip = dc->name;
       e.speed = h.approach_speed;
       if (def.part == BodyPart::Glove || def.part == BodyPart::Arm) {
@@ -301,6 +318,7 @@ void referee(World& w) {
         if (eng::anim::GraphWalker* walker = b.source.walker()) walker->force_clip(g.lying == "back" ? "getup_back" : "getup_front");
         b.ctl.root_spring.set_consciousness(0.6);
         b.ctl.stand_up_from = w.data.x[pelvis].p;
+        pass_through_opponent(w, k, true);
         boxer_state_enter(s, BoxerState::GettingUp, t, "getting up");
       }
     } else if (s.state == BoxerState::GettingUp) {
@@ -318,6 +336,10 @@ void referee(World& w) {
         b.ctl.gain_scale = 1.0;
         g.up_at = t;
         f.getup = -1;
+        // Up inside the count: the referee lets the boxer fight on, clear-headed enough not to be stunned (stunned
+        // and teleported to its mark, a boxer fell again within seconds with no punch: seed 2, 3 falls).
+        b.ctl.root_spring.set_consciousness(std::max(b.ctl.root_spring.consciousness(), tu.after_count));
+        pass_through_opponent(w, k, false);
         back_to_marks(w);
       }
     }
@@ -406,6 +428,7 @@ void match_before_control(World& w) {
     if (b.ctl.aim.active) {
       const auto& xt = w.data.x[o.bodies.body[f.aim_bone]];
       b.ctl.aim.glove = c.glove;
+      b.ctl.aim.arm_gain = mt.tuning.punch_arm_gain;
       b.ctl.aim.target = xt.p + xt.R * (f.aim_local + kAimThrough * f.aim_dir_local);
       b.ctl.aim.weight = aim_weight(walker->clip_time(), c.impact_time, c.duration());
     }
@@ -441,6 +464,19 @@ void match_before_control(World& w) {
 void match_after_step(World& w) {
   Match& mt = w.match;
   if (!mt.active || w.boxers.size() < 2) return;
+  // Pushed apart by the punches (the feet slide; the boxers cannot step back in): the referee brings them together.
+  {
+    const auto& skel = w.boxer_desc.skeleton;
+    const int head = skel.find("head"), chest = skel.find("chest");
+    bool apart = standing_state(w.boxers[0].ctl.state.state) && standing_state(w.boxers[1].ctl.state.state);
+    for (int k = 0; k < 2 && apart; ++k)
+      apart = (bone_centre(w, w.boxers[1 - k], head) - bone_centre(w, w.boxers[k], chest)).head<2>().norm() > kReach + 0.12;
+    mt.apart = apart && !mt.over ? mt.apart + kPhysicsDt : 0.0;
+    if (mt.apart >= mt.tuning.apart_time) {
+      back_to_marks(w);
+      mt.apart = 0.0;
+    }
+  }
   const char* started[2];
   track_punches(w, started);
   for (int k = 0; k < 2; ++k) mt.fighter[1 - k].saw_punch = started[k];
@@ -490,6 +526,7 @@ nlohmann::json match_report(const World& w) {
                       {"hit", e.hit_part},
                       {"other_clip", e.other_clip},
                       {"speed", e.speed},
+                      {"fist_speed", e.fist_speed},
                       {"peak_speed", e.peak_speed},
                       {"impulse", e.impulse},
                       {"damage", e.damage}});
@@ -510,15 +547,17 @@ nlohmann::json match_report(const World& w) {
                     : "points: boxer " + std::to_string(a > b ? 0 : 1) + " wins (" + std::to_string(a) + "-" +
                           std::to_string(b) + " landed)";
   }
-  std::vector<double> speeds;
+  std::vector<double> speeds, fists;
   for (const PunchEvent& e : mt.events)
-    if (e.landed) speeds.push_back(e.speed);
+    if (e.landed) speeds.push_back(e.speed), fists.push_back(e.fist_speed);
   std::sort(speeds.begin(), speeds.end());
+  std::sort(fists.begin(), fists.end());
   return {{"punches_thrown", pair([](const MatchFighter& f) { return f.thrown; })},
           {"punches_landed", pair([](const MatchFighter& f) { return f.landed; })},
           {"knockdowns", pair([](const MatchFighter& f) { return f.knockdowns; })},
           {"falls_without_hit", pair([](const MatchFighter& f) { return f.falls_without_hit; })},
           {"landed_speed_median", speeds.empty() ? 0.0 : speeds[speeds.size() / 2]},
+          {"landed_fist_speed_median", fists.empty() ? 0.0 : fists[fists.size() / 2]},
           {"consciousness", pair([&w](const MatchFighter& f) {
              const int k = static_cast<int>(&f - &w.match.fighter[0]);
              return w.boxers[k].ctl.root_spring.consciousness();

@@ -31,10 +31,11 @@ struct World;
 
 // Measured and chosen in docs/decisions/match-hits.md.
 struct MatchTuning {
+  double punch_arm_gain = 1.8;     // the striking arm's servo frequency x this during an aimed punch (punch_aim.h)
   double land_speed = 2.0;         // m/s, a glove's approach speed on head / torso for a punch to count as landed
   double impact_window = 0.05;     // s, the contact impulse summed this long after the first touch
-  double head_damage_per_ns = 0.035;  // consciousness lost per N s of impulse on the head
-  double body_damage_per_ns = 0.015;  // ... on the torso
+  double head_damage_per_ns = 0.025;  // consciousness lost per N s of impulse on the head
+  double body_damage_per_ns = 0.01;   // ... on the torso
   double knockdown_damage = 0.35;     // one hit taking this much is a knockdown
   double knockdown_below = 0.15;     // consciousness below this after a hit is a knockdown
   double stun_below = 0.6;           // stunned (lower gains, slower punches) below this consciousness
@@ -47,6 +48,8 @@ struct MatchTuning {
   double count_seconds = 10.0;       // the referee's count: not up in time = knock-out
   double up_height = 0.8;            // share of the standing pelvis height that counts as up (with guard playing)
   double settle_time = 0.5;          // s up and still before the fight goes on
+  double after_count = 0.75;         // consciousness at least this once up from a knockdown
+  double apart_time = 2.0;           // s both out of reach before the referee brings them back to their marks
 };
 
 struct PunchEvent {
@@ -57,7 +60,8 @@ struct PunchEvent {
   bool landed = false, blocked = false;
   std::string hit_part;   // what it touched first: head | torso | glove | arm ("" = missed)
   std::string other_clip;  // what the opponent was doing then (its clip)
-  double speed = 0.0;     // m/s, approach speed at the first touch
+  double speed = 0.0;     // m/s, approach speed at the first touch (along the contact normal: what lands it)
+  double fist_speed = 0.0;  // m/s, the glove's speed (its centre, world) at the first touch: the fist speed at contact
   double peak_speed = 0.0;  // m/s, the striking glove's fastest over the punch (world)
   double impulse = 0.0;   // N s over impact_window
   double damage = 0.0;
@@ -111,7 +115,8 @@ struct Match {
   std::vector<GetUp> getups;
   double round_seconds = 180.0;
   bool over = false;
-  int resets = 0;  // times the referee brought the boxers back to their marks (after a get-up)
+  int resets = 0;  // times the referee brought the boxers back to their marks (after a get-up, or apart too long)
+  double apart = 0.0;  // s both standing and out of reach of each other
   std::string result;  // "" while fighting; set by a knock-out (or at the report: points)
 };
 

@@ -17,7 +17,9 @@ double smooth(double u) {
 
 double aim_weight(double t, double impact, double duration) {
   if (impact <= 0.0 || t < 0.0) return 0.0;
-  if (t <= impact) return smooth(t / impact);
+  // Full aim from 3/4 of the way to the impact frame: the clip's glove slows into its full extension there, the aim
+  // keeps it going through the target.
+  if (t <= impact) return smooth(t / (0.75 * impact));
   const double back = std::max(1e-3, 0.6 * (duration - impact));
   return 1.0 - smooth((t - impact) / back);
 }

@@ -19,10 +19,11 @@ struct PunchAim {
   int glove = -1;                                    // the striking glove's bone
   Eigen::Vector3d target = Eigen::Vector3d::Zero();  // world point the glove's centre goes through at impact
   double weight = 0.0;                               // 0..1 this tick (aim_weight)
+  double arm_gain = 1.0;  // the striking arm's servo natural frequency x this while aimed (balance QP; 1 = as any bone)
 };
 
 // The aim's weight t seconds into a punch whose clip strikes at `impact` and lasts `duration`: smooth 0 -> 1 over
-// [0, impact], 1 -> 0 over the first 60 % of the retraction.
+// [0, 0.75 impact], 1 until the impact frame, 1 -> 0 over the first 60 % of the retraction.
 double aim_weight(double t, double impact, double duration);
 
 // Bends pose (world-placed) so the glove's centre moves toward aim.target by aim.weight. W, P: scratch.
