@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "engine/physics/dynamics.h"
 #include "engine/platform/window.h"
 #include "engine/render/renderer.h"
 #include "engine/ui/ui.h"
@@ -209,6 +210,14 @@ int run_windowed(const Options& o) {
   int shots = 0;
   double accumulator = 0.0;
   auto last = clock_type::now();
+  // The instant replay (match): a second after a knockdown, the 1.5 s before it and the second after, at 0.35x from
+  // the side camera; the simulation waits (it is not stepped), so the fight is the same with or without replays.
+  struct {
+    bool active = false;
+    double pending = -1.0, from = 0.0, to = 0.0, at = 0.0;
+    int knockdowns = 0;
+  } replay;
+  Eigen::VectorXd live_q;
   glm::dvec2 last_mouse = win.mouse_position();
   auto last_ui = clock_type::now();
   while (!win.should_close()) {
@@ -248,6 +257,7 @@ int run_windowed(const Options& o) {
     const auto now = clock_type::now();
     accumulator = std::min(accumulator + std::chrono::duration<double>(now - last).count(), 4.0 / 60.0);
     last = now;
+    if (replay.active) accumulator = 0.0;
     while (accumulator >= 1.0 / 60.0) {
       const auto t0 = clock_type::now();
       for (int s = 0; s < kStepsPerFrame; ++s) step_world(w);
@@ -256,6 +266,18 @@ int run_windowed(const Options& o) {
       ++frames;
     }
     if (o.seconds > 0 && w.data.time >= o.seconds) win.request_close();
+    if (w.match.active) {
+      const int kd = w.match.fighter[0].knockdowns + w.match.fighter[1].knockdowns;
+      if (kd > replay.knockdowns && !replay.active) replay.pending = w.data.time + 1.0, replay.from = w.data.time - 1.5;
+      replay.knockdowns = kd;
+      if (replay.pending >= 0.0 && w.data.time >= replay.pending && w.match.replay.count() > 0) {
+        replay.active = true;
+        replay.pending = -1.0;
+        replay.to = w.data.time;
+        replay.at = std::max(replay.from, w.match.replay.time(0));
+        live_q = w.data.q;
+      }
+    }
     if (overlay) {
       HudStats stats{render.ms.empty() ? 0.0f : float(render.ms.back()), r.device_name(),
                      {"t = " + std::to_string(w.data.time).substr(0, 6) + " s   scenario " + o.scenario,
@@ -263,12 +285,29 @@ int run_windowed(const Options& o) {
       if (w.match.active) stats.lines.push_back("fight: J jab K cross U/I hooks N/M uppercuts B block A/D slip S duck W/X step");
       draw_stats_panel(stats);
     }
-    if (overlay && w.match.active) draw_match_panel(match_hud(w));
+    if (overlay && w.match.active) {
+      MatchHud hud = match_hud(w);
+      if (replay.active) hud.banner = "REPLAY";
+      draw_match_panel(hud);
+    }
     eng::ui::ui_end(r.ui());
     if (win.minimized()) continue;
     const auto t1 = clock_type::now();
-    fill_frame(w, view, f);
-    f.camera = orbit.to(camera_preset(cameras[camera_index], w));
+    if (replay.active) {  // the recorded coordinates of the replay's moment, then the live ones back
+      const ReplayBuffer& rb = w.match.replay;
+      const int i = rb.at_or_before(replay.at);
+      std::copy(rb.q(i), rb.q(i) + rb.nq(), w.data.q.data());
+      eng::physics::forward_kinematics(w.model, w.data);
+      fill_frame(w, view, f);
+      f.camera = camera_preset("side", w);
+      w.data.q = live_q;
+      eng::physics::forward_kinematics(w.model, w.data);
+      replay.at += 0.35 * ui_dt;
+      if (replay.at > replay.to) replay.active = false;
+    } else {
+      fill_frame(w, view, f);
+      f.camera = orbit.to(camera_preset(cameras[camera_index], w));
+    }
     f.overlay = overlay;
     if (auto ok = r.render(f); !ok) {
       std::fprintf(stderr, "boxing: rendering failed: %s\n", ok.error().c_str());

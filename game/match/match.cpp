@@ -384,6 +384,7 @@ void match_setup(World& w) {
   mt.active = true;
   mt.owners = body_owners(static_cast<int>(w.model.bodies.size()), w.boxers, w.boxer_desc.skeleton);
   mt.round_seconds = w.options.round_seconds;
+  mt.replay.init(static_cast<int>(kReplaySeconds * 60.0), static_cast<int>(w.data.q.size()));
   for (int k = 0; k < 2 && k < static_cast<int>(w.boxers.size()); ++k) {
     MatchFighter& f = mt.fighter[k];
     w.boxers[k].ctl.mark = w.boxers[k].desired.pose.root_position.head<2>();  // where the pelvis starts
@@ -480,6 +481,7 @@ void match_after_step(World& w) {
   const char* started[2];
   track_punches(w, started);
   for (int k = 0; k < 2; ++k) mt.fighter[1 - k].saw_punch = started[k];
+  if ((w.steps + 1) % kStepsPerFrame == 0) mt.replay.record(w.data.q, w.data.time);  // one per 60 Hz frame
   for (int k = 0; k < 2; ++k) {  // the striking glove's speed over the punch
     const MatchFighter& f = mt.fighter[k];
     const Clip* c = clip_of(w, w.boxers[k]);

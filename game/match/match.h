@@ -24,12 +24,15 @@
 #include "game/hud.h"
 #include "game/match/body_parts.h"
 #include "game/match/fighter_ai.h"
+#include "game/match/replay.h"
 
 namespace boxing {
 
 struct World;
 
-// Measured and chosen in docs/decisions/match-hits.md.
+inline constexpr double kReplaySeconds = 4.0;
+
+// Measured and chosen in docs/decisions/match-fight.md.
 struct MatchTuning {
   double punch_arm_gain = 1.8;     // the striking arm's servo frequency x this during an aimed punch (punch_aim.h)
   double land_speed = 2.0;         // m/s, a glove's approach speed on head / torso for a punch to count as landed
@@ -117,6 +120,7 @@ struct Match {
   bool over = false;
   int resets = 0;  // times the referee brought the boxers back to their marks (after a get-up, or apart too long)
   double apart = 0.0;  // s both standing and out of reach of each other
+  ReplayBuffer replay;  // the last kReplaySeconds of the bodies' coordinates at 60 Hz (the window's instant replay)
   std::string result;  // "" while fighting; set by a knock-out (or at the report: points)
 };
 

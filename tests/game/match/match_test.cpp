@@ -107,6 +107,37 @@ TEST(Match, PlayersBoxerPunchesOnlyOnCommand) {
   EXPECT_EQ(red_crosses, 1);
 }
 
+// The instant replay's ring keeps the newest frames in time order, each frame's coordinates as recorded.
+TEST(ReplayBuffer, KeepsTheNewestFramesInOrder) {
+  ReplayBuffer rb;
+  rb.init(240, 3);
+  Eigen::VectorXd q(3);
+  for (int f = 0; f < 300; ++f) {
+    q << f, 2.0 * f, -f;
+    rb.record(q, f / 60.0);
+  }
+  ASSERT_EQ(rb.count(), 240);
+  EXPECT_DOUBLE_EQ(rb.time(0), 60 / 60.0);
+  EXPECT_DOUBLE_EQ(rb.time(239), 299 / 60.0);
+  for (int i = 0; i < 240; ++i) {
+    EXPECT_EQ(rb.q(i)[0], 60.0 + i);
+    EXPECT_EQ(rb.q(i)[1], 2.0 * (60 + i));
+  }
+  EXPECT_EQ(rb.at_or_before(100.5 / 60.0), 40);
+  EXPECT_EQ(rb.at_or_before(0.0), 0);  // older than anything kept: the oldest
+}
+
+// The match records one frame per 60 Hz display frame for the replay.
+TEST(Match, RecordsTheLastSecondsForTheReplay) {
+  auto w = run_match(1, 6.0);
+  ASSERT_TRUE(w);
+  const ReplayBuffer& rb = w->match.replay;
+  ASSERT_EQ(rb.count(), static_cast<int>(kReplaySeconds * 60));
+  EXPECT_NEAR(rb.time(rb.count() - 1), w->data.time, 1e-9);
+  EXPECT_NEAR(rb.time(rb.count() - 1) - rb.time(0), kReplaySeconds - 1.0 / 60.0, 1e-9);
+  for (int k = 0; k < rb.nq(); ++k) EXPECT_EQ(rb.q(rb.count() - 1)[k], w->data.q[k]);
+}
+
 TEST(PunchAim, WeightRisesToOneAtImpactAndFallsBackOverTheRetraction) {
   const double impact = 0.14, duration = 0.4;
   EXPECT_EQ(aim_weight(0.0, impact, duration), 0.0);
