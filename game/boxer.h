@@ -91,10 +91,9 @@ struct BoxerControlState {
   Eigen::Vector2d anchor = Eigen::Vector2d::Zero();
   BoxerStateMachine state;  // guard / down ... (boxer_state.h): control reads this, never the metrics
   // The match (game/match/match.h) writes these before control: the punch's aim (punch_aim.h), the servo gains'
-  // scale (lower when stunned or knocked down), where a stand-up started (the pelvis, world).
+  // scale (lower when stunned or knocked down).
   PunchAim aim;
   double gain_scale = 1.0;
-  Eigen::Vector3d stand_up_from = Eigen::Vector3d::Zero();
   Eigen::Vector2d mark = Eigen::Vector2d::Zero();  // the match: where the pelvis starts (the referee's reset)
   double yaw_offset = 0.0;  // rad, added to the stance heading when placing the clip (the reset faces the opponent)
 };

@@ -37,6 +37,7 @@ class PoseSource {
   // How far (m, along the heading) a walk may drift from its spot before it steps back toward it (default 0.25).
   void set_leash(double metres) { leash_ = metres; }
   eng::anim::GraphWalker* walker() { return walker_.get(); }
+  const eng::anim::GraphWalker* walker() const { return walker_.get(); }
   // Seconds spent per clip so far (the clips played, by name; built for the report).
   std::map<std::string, double> clip_time() const;
   // Every clip change: (time it started, clip), in order; the report's clip timeline.

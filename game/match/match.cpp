@@ -2,13 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 
 #include "engine/anim/motion_graph.h"
-#include "game/match/punch_aim.h"
 #include "engine/control/servo/person_space.h"
-#include "game/world.h"
 #include "game/character_builder.h"
+#include "game/match/punch_aim.h"
+#include "game/world.h"
 
 namespace boxing {
 
@@ -25,7 +24,7 @@ constexpr double kAimThrough = 0.2;
 constexpr double kReach = 0.74;
 
 const Clip* clip_of(const World& w, const Boxer& b) {
-  const eng::anim::GraphWalker* walker = const_cast<Boxer&>(b).source.walker();
+  const eng::anim::GraphWalker* walker = b.source.walker();
   return walker ? &w.graph.clips[walker->current_clip_index()] : nullptr;
 }
 
@@ -317,7 +316,6 @@ void referee(World& w) {
         g.lying = front.z() > 0.0 ? "back" : "front";
         if (eng::anim::GraphWalker* walker = b.source.walker()) walker->force_clip(g.lying == "back" ? "getup_back" : "getup_front");
         b.ctl.root_spring.set_consciousness(0.6);
-        b.ctl.stand_up_from = w.data.x[pelvis].p;
         pass_through_opponent(w, k, true);
         boxer_state_enter(s, BoxerState::GettingUp, t, "getting up");
       }
@@ -375,8 +373,9 @@ const char* fight_command_clip(FightCommand c) {
 
 void match_command(World& w, int k, FightCommand c) {
   if (!w.match.active || k < 0 || k > 1) return;
-  w.match.fighter[k].player = true;
-  w.match.fighter[k].command = c;
+  MatchFighter& f = w.match.fighter[k];
+  f.player = true;
+  if (c != FightCommand::None && f.queued < MatchFighter::kCommandBuffer) f.commands[f.queued++] = c;
 }
 
 void match_setup(World& w) {
@@ -436,10 +435,11 @@ void match_before_control(World& w) {
     if (f.player) {
       // The player's command, taken when the boxer stands and the walk is free of a plan (a punch asked for during
       // another is taken once that one lets the graph go, like a buffered input in a fighting game).
-      if (f.command != FightCommand::None && standing && !walker->has_plan() && !mt.over) {
-        if (walker->request_clip(fight_command_clip(f.command))) ++f.commands_taken;
+      if (f.queued > 0 && standing && !walker->has_plan() && !mt.over) {
+        if (walker->request_clip(fight_command_clip(f.commands[0]))) ++f.commands_taken;
         f.ai.aim_body = false;
-        f.command = FightCommand::None;
+        std::copy(f.commands.begin() + 1, f.commands.end(), f.commands.begin());
+        --f.queued;
       }
       continue;
     }

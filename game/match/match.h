@@ -89,7 +89,11 @@ const char* fight_command_clip(FightCommand c);  // the clip it asks for ("" for
 struct MatchFighter {
   FighterAi ai;
   bool player = false;           // --player (or a fight key in the window): the keyboard steers this one (no AI)
-  FightCommand command = FightCommand::None;  // the player's, taken on the next tick
+  // The player's commands, in order, taken one at a time when the walk is free (an input buffer: a key pressed during
+  // a punch is thrown after it, not lost or overwritten by the next key). At most kCommandBuffer wait; more are dropped.
+  static constexpr int kCommandBuffer = 4;
+  std::array<FightCommand, kCommandBuffer> commands{};
+  int queued = 0;
   int commands_taken = 0;        // player commands the motion graph accepted
   int thrown = 0, landed = 0, knockdowns = 0, falls_without_hit = 0;
   int last_clip = -1;            // the graph clip of the last tick
@@ -100,7 +104,6 @@ struct MatchFighter {
   double still = 0.0;            // s lying still
   double settled = 0.0;          // s up and still (the end of a stand-up)
   int getup = -1;                // getups index of the current knockdown
-  bool stunned = false;
   const char* saw_punch = nullptr;  // the other boxer started this punch on the last tick (for the AI)
   // The punch's target: a point fixed to the opponent's head or chest (bone frame), the opening chosen at the punch's
   // start (choose_opening) and followed as the opponent moves.
@@ -130,7 +133,7 @@ void match_setup(World& w);
 void match_before_control(World& w);
 // After the physics step and measurements: punches, hits, damage, reactions, knockdowns, the count, get-ups.
 void match_after_step(World& w);
-// The player's command for boxer k (it becomes the player's from now on).
+// The player's command for boxer k, queued (the boxer becomes the player's from now on).
 void match_command(World& w, int k, FightCommand c);
 
 // What the match panel shows now (game/hud.h).

@@ -95,16 +95,24 @@ TEST(Match, PlayersBoxerPunchesOnlyOnCommand) {
   for (int i = 0; i < 8 * 240; ++i) step_world(world);
   EXPECT_EQ(world.match.fighter[0].thrown, 0);
   EXPECT_GT(world.match.fighter[1].thrown, 0);
-  for (int i = 0; i < 6 && world.match.fighter[0].commands_taken == 0; ++i) {
-    match_command(world, 0, FightCommand::Cross);
-    for (int k = 0; k < 120; ++k) step_world(world);
-  }
+  match_command(world, 0, FightCommand::Cross);
+  for (int i = 0; i < 3 * 240 && world.match.fighter[0].commands_taken == 0; ++i) step_world(world);
   for (int i = 0; i < 240; ++i) step_world(world);
   EXPECT_EQ(world.match.fighter[0].commands_taken, 1);
   EXPECT_EQ(world.match.fighter[0].thrown, 1);
   int red_crosses = 0;
   for (const PunchEvent& e : world.match.events) red_crosses += e.boxer == 0 && e.punch == "cross";
   EXPECT_EQ(red_crosses, 1);
+  // Keys pressed faster than the punches play are buffered and thrown in order, none lost.
+  for (FightCommand c : {FightCommand::Jab, FightCommand::Cross, FightCommand::Jab}) match_command(world, 0, c);
+  EXPECT_EQ(world.match.fighter[0].queued, 3);
+  for (int i = 0; i < 6 * 240 && world.match.fighter[0].queued > 0; ++i) step_world(world);
+  for (int i = 0; i < 240; ++i) step_world(world);
+  EXPECT_EQ(world.match.fighter[0].commands_taken, 4);
+  std::vector<std::string> red;
+  for (const PunchEvent& e : world.match.events)
+    if (e.boxer == 0) red.push_back(e.punch);
+  EXPECT_EQ(red, (std::vector<std::string>{"cross", "jab", "cross", "jab"}));
 }
 
 // The instant replay's ring keeps the newest frames in time order, each frame's coordinates as recorded.
