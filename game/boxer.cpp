@@ -197,13 +197,6 @@ void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const en
   if (steps && d.time > 0.0) update_support_base(d, arena, b, dt);
   if (steps && d.time > 0.0) gate_lift_off(m, d, desc, b, swing, dt);
   place_desired_pose(desc, arena, b, b.desired);
-  if (b.ctl.state.state == BoxerState::GettingUp && b.ctl.state.since == d.time && b.settings.tuning.stand_up.realign) {
-    // The stand-up starts where the body lies: the desired motion moved onto the pelvis (the down clip went on as
-    // authored while the body fell where the hit and the crates took it).
-    const Eigen::Vector2d shift = (d.x[b.bodies.body[0]].p - b.desired.pose.root_position).head<2>();
-    b.ctl.anchor += shift;
-    b.desired.pose.root_position.head<2>() += shift;
-  }
   if (b.ctl.state.state == BoxerState::GettingUp) {
     // Rising, the boxer makes its way back to its mark (the stance: fighting distance), the root assist guiding it:
     // the placement's offset decays with a 0.7 s time constant (its steps do not carry it there, see arena.h).

@@ -25,12 +25,8 @@ struct StandUpTuning {
     return p;
   }();
   // Share of the body's weight the assist carries as a feed-forward (the rest is the legs' and arms' work): without it
-  // the position spring sagged 0.3 m under the weight and the boxer stayed crouched (docs/decisions/match-get-up.md).
+  // the position spring sagged 0.3 m under the weight and the boxer stayed crouched (docs/decisions/match-fight.md).
   double weight_share = 0.85;
-  // Move the get-up's desired motion onto where the pelvis lies (true), or leave it where the walk's fall, down and
-  // get-up clips put it, relative to the boxer's mark (false: the get-up ends standing near the mark, at fighting
-  // distance; the boxers cannot step back to it). docs/decisions/match-get-up.md.
-  bool realign = false;
 };
 
 // Writes the servo's torques and the root assist into the physics data; b.ctl.root_torque / root_force: the assist.

@@ -48,6 +48,12 @@ Eigen::Vector2d facing(const World& w, const Boxer& b) {
   return h.norm() > 1e-6 ? Eigen::Vector2d(h.normalized()) : Eigen::Vector2d(std::cos(b.stance.heading), std::sin(b.stance.heading));
 }
 
+// The other boxer's head from boxer k's chest, on the floor (m): the AI's range and the referee's "apart".
+double reach_distance(const World& w, int k) {
+  const MatchBones& mb = w.match.bones;
+  return (bone_centre(w, w.boxers[1 - k], mb.head) - bone_centre(w, w.boxers[k], mb.chest)).head<2>().norm();
+}
+
 double pelvis_height(const World& w, const Boxer& b) {
   return w.data.x[b.bodies.body[0]].p.z() - std::min(b.stance.lead_top, b.stance.rear_top);
 }
@@ -143,7 +149,8 @@ void choose_opening(World& w, int k, const Clip& c, bool body) {
   const Boxer& o = w.boxers[1 - k];
   MatchFighter& f = w.match.fighter[k];
   const auto& skel = w.boxer_desc.skeleton;
-  const int bone = skel.find(body ? "chest" : "head");
+  const MatchBones& mb = w.match.bones;
+  const int bone = body ? mb.chest : mb.head;
   static const Eigen::Vector3d kHead[] = {{0.09, 0, 0.0}, {0.07, 0, -0.07}, {0.03, 0.08, 0.02}, {0.03, -0.08, 0.02},
                                           {0.05, 0, 0.09}};
   static const Eigen::Vector3d kTorso[] = {{0.12, 0, -0.08}, {0.08, 0.13, -0.05}, {0.08, -0.13, -0.05}};
@@ -161,11 +168,10 @@ void choose_opening(World& w, int k, const Clip& c, bool body) {
   Eigen::Vector3d guard[8];
   double radius[8];
   int ng = 0;
-  for (const char* name : {"glove_l", "glove_r", "forearm_l", "forearm_r"}) {
-    const int gb = skel.find(name);
+  for (const int gb : {mb.glove[0], mb.glove[1], mb.forearm[0], mb.forearm[1]}) {
     if (gb < 0) continue;
     const auto& x = w.data.x[o.bodies.body[gb]];
-    if (name[0] == 'g') {
+    if (gb == mb.glove[0] || gb == mb.glove[1]) {
       guard[ng] = x.p + x.R * w.boxer_desc.bones[gb].com, radius[ng++] = 0.07;
     } else {
       guard[ng] = x.p + x.R * (0.5 * w.boxer_desc.bones[gb].com), radius[ng++] = 0.05;
@@ -281,7 +287,6 @@ void referee(World& w) {
   Match& mt = w.match;
   const MatchTuning& tu = mt.tuning;
   const double t = w.data.time, dt = kPhysicsDt;
-  const auto& skel = w.boxer_desc.skeleton;
   for (int k = 0; k < 2; ++k) {
     Boxer& b = w.boxers[k];
     MatchFighter& f = mt.fighter[k];
@@ -311,7 +316,7 @@ void referee(World& w) {
       f.still = speed < tu.still_speed ? f.still + dt : 0.0;
       if (f.still >= tu.still_time && t - g.down_at >= tu.min_down_time && !mt.over) {
         // Lying on the back: the chest's front (+X of the bone) looks up.
-        const int chest = skel.find("chest");
+        const int chest = mt.bones.chest;
         const Eigen::Vector3d front = w.data.x[b.bodies.body[chest >= 0 ? chest : 0]].R * Eigen::Vector3d::UnitX();
         g.lying = front.z() > 0.0 ? "back" : "front";
         if (eng::anim::GraphWalker* walker = b.source.walker()) walker->force_clip(g.lying == "back" ? "getup_back" : "getup_front");
@@ -382,6 +387,11 @@ void match_setup(World& w) {
   Match& mt = w.match;
   mt.active = true;
   mt.owners = body_owners(static_cast<int>(w.model.bodies.size()), w.boxers, w.boxer_desc.skeleton);
+  const auto& skel = w.boxer_desc.skeleton;
+  mt.bones.head = skel.find("head");
+  mt.bones.chest = skel.find("chest");
+  mt.bones.glove[0] = skel.find("glove_l"), mt.bones.glove[1] = skel.find("glove_r");
+  mt.bones.forearm[0] = skel.find("forearm_l"), mt.bones.forearm[1] = skel.find("forearm_r");
   mt.round_seconds = w.options.round_seconds;
   mt.replay.init(static_cast<int>(kReplaySeconds * 60.0), static_cast<int>(w.data.q.size()));
   for (int k = 0; k < 2 && k < static_cast<int>(w.boxers.size()); ++k) {
@@ -412,8 +422,6 @@ void match_before_control(World& w) {
   Match& mt = w.match;
   if (!mt.active || w.boxers.size() < 2) return;
   const double t = w.data.time;
-  const auto& skel = w.boxer_desc.skeleton;
-  const int head = skel.find("head"), chest = skel.find("chest");
   for (int k = 0; k < 2; ++k) {
     Boxer& b = w.boxers[k];
     const Boxer& o = w.boxers[1 - k];
@@ -450,7 +458,7 @@ void match_before_control(World& w) {
     v.free = standing && !walker->has_plan() && c.has_tag("guard");
     // Distance: the opponent's head from this boxer's chest, on the floor. A straight punch puts the glove's centre
     // about kReach ahead of the chest at full extension (measured: 0.74 m); in range within a head's depth of that.
-    const double dist = (bone_centre(w, o, head) - bone_centre(w, b, chest)).head<2>().norm();
+    const double dist = reach_distance(w, k);
     const bool opponent_up = standing_state(o.ctl.state.state);  // no hitting a downed man
     v.in_range = dist < kReach + 0.08 && opponent_up;
     v.too_far = dist > kReach + 0.03 && opponent_up;
@@ -467,11 +475,8 @@ void match_after_step(World& w) {
   if (!mt.active || w.boxers.size() < 2) return;
   // Pushed apart by the punches (the feet slide; the boxers cannot step back in): the referee brings them together.
   {
-    const auto& skel = w.boxer_desc.skeleton;
-    const int head = skel.find("head"), chest = skel.find("chest");
     bool apart = standing_state(w.boxers[0].ctl.state.state) && standing_state(w.boxers[1].ctl.state.state);
-    for (int k = 0; k < 2 && apart; ++k)
-      apart = (bone_centre(w, w.boxers[1 - k], head) - bone_centre(w, w.boxers[k], chest)).head<2>().norm() > kReach + 0.12;
+    for (int k = 0; k < 2 && apart; ++k) apart = reach_distance(w, k) > kReach + 0.12;
     mt.apart = apart && !mt.over ? mt.apart + kPhysicsDt : 0.0;
     if (mt.apart >= mt.tuning.apart_time) {
       back_to_marks(w);

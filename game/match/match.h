@@ -112,8 +112,15 @@ struct MatchFighter {
   Eigen::Vector3d aim_dir_local = Eigen::Vector3d::UnitX();  // the punch's approach direction (same frame)
 };
 
+// The boxer's bones the match reads every tick, resolved by name once (match_setup).
+struct MatchBones {
+  int head = -1, chest = -1;
+  int glove[2] = {-1, -1}, forearm[2] = {-1, -1};  // [0] left, [1] right
+};
+
 struct Match {
   bool active = false;
+  MatchBones bones;
   MatchTuning tuning;
   std::vector<BodyOwner> owners;
   std::array<MatchFighter, 2> fighter;
