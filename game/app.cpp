@@ -13,7 +13,9 @@
 #include "engine/platform/window.h"
 #include "engine/render/renderer.h"
 #include "engine/ui/ui.h"
+#include "game/control_panel.h"
 #include "game/hud.h"
+#include "game/interaction/mouse_hands.h"
 #include "game/scene_view.h"
 #include "game/world.h"
 
@@ -86,6 +88,15 @@ eng::Result<void> save_png(const eng::Image& img, const std::string& path) {
   return {};
 }
 
+eng::Result<void> write_recording(const Options& o, const World& w) {
+  if (o.record.empty()) return {};
+  auto ok = write_input_file(o.record, w.interaction.recorded);
+  if (ok) std::printf("boxing: %zu input events recorded to %s (play back: --scenario %s --seed %llu --input %s)\n",
+                      w.interaction.recorded.size(), o.record.c_str(), o.scenario.c_str(),
+                      static_cast<unsigned long long>(w.options.seed), o.record.c_str());
+  return ok;
+}
+
 }  // namespace
 
 eng::Result<HeadlessRun> run_headless(const Options& o) {
@@ -141,6 +152,7 @@ eng::Result<HeadlessRun> run_headless(const Options& o) {
   if (!o.screenshot.empty())
     if (auto ok = save_png(out.image, o.screenshot); !ok) return eng::make_error(ok.error());
   if (auto ok = write_report(o.report, out.report); !ok) return eng::make_error(ok.error());
+  if (auto ok = write_recording(o, w); !ok) return eng::make_error(ok.error());
   return out;
 }
 
@@ -164,26 +176,25 @@ struct OrbitCamera {
   }
 };
 
-// The player's keys in the match (README: Controls).
-constexpr std::pair<int, FightCommand> kFightKeys[] = {
-    {GLFW_KEY_J, FightCommand::Jab},          {GLFW_KEY_K, FightCommand::Cross},
-    {GLFW_KEY_U, FightCommand::LeadHook},     {GLFW_KEY_I, FightCommand::RearHook},
-    {GLFW_KEY_N, FightCommand::LeadUppercut}, {GLFW_KEY_M, FightCommand::RearUppercut},
-    {GLFW_KEY_B, FightCommand::Block},        {GLFW_KEY_A, FightCommand::SlipLeft},
-    {GLFW_KEY_D, FightCommand::SlipRight},    {GLFW_KEY_S, FightCommand::Duck},
-    {GLFW_KEY_W, FightCommand::StepForward},  {GLFW_KEY_X, FightCommand::StepBack}};
+// The player's keys in the match (README: Controls): each becomes a key input event (interaction.h).
+constexpr std::pair<int, const char*> kFightKeys[] = {
+    {GLFW_KEY_J, "jab"},           {GLFW_KEY_K, "cross"},        {GLFW_KEY_U, "lead_hook"},
+    {GLFW_KEY_I, "rear_hook"},     {GLFW_KEY_N, "lead_uppercut"}, {GLFW_KEY_M, "rear_uppercut"},
+    {GLFW_KEY_B, "block"},         {GLFW_KEY_A, "slip_left"},    {GLFW_KEY_D, "slip_right"},
+    {GLFW_KEY_S, "duck"},          {GLFW_KEY_W, "step_forward"}, {GLFW_KEY_X, "step_back"}};
 
 int run_windowed(const Options& o) {
-  auto world = make_world(o);
-  if (!world) {
-    std::fprintf(stderr, "%s\n", world.error().c_str());
+  auto made = make_world(o);
+  if (!made) {
+    std::fprintf(stderr, "%s\n", made.error().c_str());
     return 1;
   }
-  World& w = **world;
+  std::unique_ptr<World> world = std::move(*made);
   eng::platform::WindowConfig wc;
   wc.width = o.width;
   wc.height = o.height;
-  wc.title = "Boxing";
+  // The scenario and seed in the title (a player sees what runs; a test's xdotool finds its own window).
+  wc.title = "Boxing - " + o.scenario + " (seed " + std::to_string(o.seed) + ")";
   auto window = eng::platform::Window::create(wc);
   if (!window) {
     std::fprintf(stderr, "boxing: %s\n", window.error().c_str());
@@ -196,15 +207,19 @@ int run_windowed(const Options& o) {
   }
   eng::render::Renderer& r = **renderer;
   eng::platform::Window& win = **window;
-  SceneView view = make_scene_view(w, r);
+  SceneView view = make_scene_view(*world, r);
   const char* cameras[] = {"default", "closeup", "side", "top"};
   int camera_index = 0;
   for (int i = 0; i < 4; ++i)
     if (o.camera == cameras[i]) camera_index = i;
   eng::render::FrameDesc f;
   OrbitCamera orbit;
-  orbit.from(camera_preset(cameras[camera_index], w));
+  orbit.from(camera_preset(cameras[camera_index], *world));
   bool overlay = o.overlay_given ? o.overlay : true;
+  PanelState panel;
+  panel.seed = int(o.seed);
+  MouseHands hands;
+  bool left_was_down = false;
   FrameTimes sim, render;
   long frames = 0;
   int shots = 0;
@@ -221,14 +236,37 @@ int run_windowed(const Options& o) {
   glm::dvec2 last_mouse = win.mouse_position();
   auto last_ui = clock_type::now();
   while (!win.should_close()) {
+    if (panel.restart) {  // a new world with the panel's seed (the recording starts again with it)
+      panel.restart = false;
+      Options ro = world->options;
+      ro.seed = uint64_t(panel.seed);
+      auto again = make_world(ro);
+      if (again) {
+        world = std::move(*again);
+        view = [&] {
+          SceneView v = make_scene_view(*world, r);
+          v.ghost = view.ghost, v.debug = view.debug;
+          return v;
+        }();
+        hands = MouseHands{};
+        replay = {};
+      } else {
+        std::fprintf(stderr, "%s\n", again.error().c_str());
+      }
+    }
+    World& w = *world;
     win.poll_events();
     // The UI frame opens first: it says whether this frame's mouse and keys belong to a panel or to the scene; the
     // panels are built after the simulation (they show its time) and the frame ends before rendering.
     const auto ui_now = clock_type::now();
     const float ui_dt = std::max(1e-4f, std::chrono::duration<float>(ui_now - last_ui).count());
     last_ui = ui_now;
-    eng::ui::ui_begin(r.ui(), win.ui_input(ui_dt));
+    const eng::ui::UiInput uin = win.ui_input(ui_dt);
+    eng::ui::ui_begin(r.ui(), uin);
     const bool ui_mouse = eng::ui::ui_wants_mouse(r.ui()), ui_keys = eng::ui::ui_wants_keyboard(r.ui());
+    const eng::render::Camera cam = orbit.to(camera_preset(cameras[camera_index], w));
+    const bool mouse_in = uin.mouse_x > -1e30f;
+    const CameraRay ray = camera_ray(cam, uin.mouse_x, uin.mouse_y, uin.display_width, uin.display_height);
     if (!ui_keys) {
       if (win.key_pressed(GLFW_KEY_ESCAPE)) win.request_close();
       if (win.key_pressed(GLFW_KEY_H)) overlay = !overlay;
@@ -239,25 +277,53 @@ int run_windowed(const Options& o) {
       }
       // The fight keys: the first one takes over the red boxer (or the --player one) from the AI.
       if (w.match.active)
-        for (const auto& [key, command] : kFightKeys)
-          if (win.key_pressed(key)) match_command(w, o.player >= 0 ? o.player : 0, command);
+        for (const auto& [key, action] : kFightKeys)
+          if (win.key_pressed(key)) {
+            InputEvent e;
+            e.kind = InputKind::Key;
+            e.action = action;
+            e.boxer = o.player >= 0 ? o.player : 0;
+            interaction_submit(w, e);
+          }
+      // Throws from the camera toward the cursor; Backspace clears them.
+      if (mouse_in && win.key_pressed(GLFW_KEY_T)) interaction_submit(w, throw_from_camera(w, ray, ObjectKind::Ball));
+      if (mouse_in && win.key_pressed(GLFW_KEY_Y)) interaction_submit(w, throw_from_camera(w, ray, ObjectKind::Crate));
+      if (win.key_pressed(GLFW_KEY_BACKSPACE)) {
+        InputEvent e;
+        e.kind = InputKind::Clear;
+        interaction_submit(w, e);
+      }
+      handle_panel_keys(w, view, panel, {[](const void* c, int k) { return static_cast<const eng::platform::Window*>(c)->key_pressed(k); }, &win});
     }
     const glm::dvec2 mouse = win.mouse_position();
+    // The left button: grab what is under the cursor, drag it, let go (the panel keeps its own clicks).
+    const bool left = uin.mouse_down[0];
+    const double wheel = uin.wheel_y;
+    if (left && !left_was_down && !ui_mouse && mouse_in) {
+      const bool strong = win.key_down(GLFW_KEY_LEFT_SHIFT) || win.key_down(GLFW_KEY_RIGHT_SHIFT);
+      hands_press(w, hands, ray, cam, strong);
+    } else if (left && hands.held && mouse_in) {
+      hands_drag(w, hands, ray, cam, wheel);
+    } else if (!left && hands.held) {
+      hands_release(w, hands);
+    }
+    left_was_down = left;
     if (!ui_mouse) {  // drags and the wheel over a panel are the panel's
       if (win.mouse_button_down(GLFW_MOUSE_BUTTON_RIGHT)) {
         orbit.yaw -= float(mouse.x - last_mouse.x) * 0.006f;
         orbit.pitch = std::clamp(orbit.pitch + float(mouse.y - last_mouse.y) * 0.006f, -0.1f, 1.5f);
       }
-      orbit.dist = std::clamp(orbit.dist * std::pow(0.9f, float(win.scroll_delta().y)), 1.0f, 20.0f);
+      if (!hands.held) orbit.dist = std::clamp(orbit.dist * std::pow(0.9f, float(win.scroll_delta().y)), 1.0f, 20.0f);
     }
     last_mouse = mouse;
 
-    // Fixed 60 Hz simulation frames, as many as real time asks for (at most 4 per rendered frame, so a slow
-    // machine runs in slow motion instead of spiralling).
+    // Fixed 60 Hz simulation frames, as many as real time (scaled by the slow motion) asks for (at most 4 per
+    // rendered frame, so a slow machine runs in slow motion instead of spiralling). Paused: only single steps.
     const auto now = clock_type::now();
-    accumulator = std::min(accumulator + std::chrono::duration<double>(now - last).count(), 4.0 / 60.0);
+    accumulator = std::min(accumulator + time_scale(panel) * std::chrono::duration<double>(now - last).count(), 4.0 / 60.0);
     last = now;
-    if (replay.active) accumulator = 0.0;
+    if (replay.active || panel.paused) accumulator = 0.0;
+    if (panel.step_once && !replay.active) accumulator = 1.0 / 60.0, panel.step_once = false;
     while (accumulator >= 1.0 / 60.0) {
       const auto t0 = clock_type::now();
       for (int s = 0; s < kStepsPerFrame; ++s) step_world(w);
@@ -279,11 +345,16 @@ int run_windowed(const Options& o) {
       }
     }
     if (overlay) {
+      char status[160];
+      std::snprintf(status, sizeof status, "t = %.2f s  %s  scenario %s  seed %llu", w.data.time,
+                    panel.paused ? "PAUSED" : time_scale_name(panel), o.scenario.c_str(),
+                    static_cast<unsigned long long>(w.options.seed));
       HudStats stats{render.ms.empty() ? 0.0f : float(render.ms.back()), r.device_name(),
-                     {"t = " + std::to_string(w.data.time).substr(0, 6) + " s   scenario " + o.scenario,
-                      "F12 screenshot  H overlay  G ghost  C camera  Esc quit"}};
+                     {status, "F12 screenshot  H overlay  G ghost  C camera  Esc quit",
+                      "left-drag grab (Shift strong)  T ball  Y crate  P pause"}};
       if (w.match.active) stats.lines.push_back("fight: J jab K cross U/I hooks N/M uppercuts B block A/D slip S duck W/X step");
       draw_stats_panel(stats);
+      draw_control_panel(w, view, panel);
     }
     if (overlay && w.match.active) {
       MatchHud hud = match_hud(w);
@@ -306,7 +377,7 @@ int run_windowed(const Options& o) {
       if (replay.at > replay.to) replay.active = false;
     } else {
       fill_frame(w, view, f);
-      f.camera = orbit.to(camera_preset(cameras[camera_index], w));
+      f.camera = cam;
     }
     f.overlay = overlay;
     if (auto ok = r.render(f); !ok) {
@@ -326,7 +397,12 @@ int run_windowed(const Options& o) {
       else std::fprintf(stderr, "boxing: screenshot failed\n");
     }
   }
+  World& w = *world;
   if (auto ok = write_report(o.report, base_report(o, w, frames, r, sim, render, false)); !ok) {
+    std::fprintf(stderr, "%s\n", ok.error().c_str());
+    return 1;
+  }
+  if (auto ok = write_recording(o, w); !ok) {
     std::fprintf(stderr, "%s\n", ok.error().c_str());
     return 1;
   }

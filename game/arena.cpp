@@ -15,6 +15,16 @@ double Arena::top_at(double x, double y) const {
   return top;
 }
 
+Stance stance_at(const Arena& a, const Eigen::Vector2d& position, double heading) {
+  Stance s{position, heading, 0.0, 0.0};
+  const double c = std::cos(heading), sn = std::sin(heading);
+  s.lead_top = a.top_at(position.x() + c * kStanceHalfLength - sn * kStanceHalfWidth,
+                        position.y() + sn * kStanceHalfLength + c * kStanceHalfWidth);
+  s.rear_top = a.top_at(position.x() - c * kStanceHalfLength + sn * kStanceHalfWidth,
+                        position.y() - sn * kStanceHalfLength - c * kStanceHalfWidth);
+  return s;
+}
+
 Arena make_arena(uint64_t seed, double min_step, double separation) {
   Rng rng(seed * 0x9E3779B97F4A7C15ull + 17);
   Arena a;
@@ -73,13 +83,7 @@ Arena make_arena(uint64_t seed, double min_step, double separation) {
       }
     }
   }
-  for (Stance& s : a.stances) {
-    const double c = std::cos(s.heading), sn = std::sin(s.heading);
-    s.lead_top = a.top_at(s.position.x() + c * kStanceHalfLength - sn * kStanceHalfWidth,
-                          s.position.y() + sn * kStanceHalfLength + c * kStanceHalfWidth);
-    s.rear_top = a.top_at(s.position.x() - c * kStanceHalfLength + sn * kStanceHalfWidth,
-                          s.position.y() - sn * kStanceHalfLength - c * kStanceHalfWidth);
-  }
+  for (Stance& s : a.stances) s = stance_at(a, s.position, s.heading);
   return a;
 }
 

@@ -41,6 +41,8 @@ inline eng::control::GroundHeight ground_of(const Arena& a) {
 }
 
 Arena make_arena(uint64_t seed, double min_step = 0.10, double separation = 1.20);
+// A stance at a pelvis position and heading: the tops under its lead and rear feet read from the arena.
+Stance stance_at(const Arena& a, const Eigen::Vector2d& position, double heading);
 
 // Stance geometry shared by the arena layout and the boxer placement (orthodox stance, facing +X at heading 0):
 // the lead (left) foot is ahead and to the left of the pelvis, the rear foot behind and to the right.

@@ -65,6 +65,7 @@ struct BoxerSettings {
   eng::control::MeathookParams hook;
   eng::control::RootSpringParams root_params;  // enabled per scenario (world.cpp), off = no root help
   BoxerTuning tuning;                          // every tuning value of the boxer's control (boxer_tuning.h)
+  bool balance_qp = true;  // the balance QP where the servo space allows (world / person), else the PD layer
 };
 
 // Controller state carried from tick to tick.

@@ -54,7 +54,7 @@ flags:
   --width N, --height N  frame size in pixels (default 1280x720)
   --seconds S            simulated seconds to run, then exit (headless default 2)
   --seed N               arena layout and all randomness (default 1)
-  --scenario NAME        arena | ragdolls | stand | push | graph-walk | match (default arena)
+  --scenario NAME        arena | ragdolls | stand | push | graph-walk | match | impacts (default arena)
   --camera NAME          default | closeup | side | top
   --screenshot FILE.png  write the last frame
   --report FILE.json     write what ran: seed, seconds, frames, device, frame times, scenario results
@@ -72,6 +72,8 @@ flags:
   --push-at S            push scenario: start time (default 2)
   --round-seconds S      match: a round's length (default 180)
   --player 0|1           match: the keyboard steers that boxer, the AI the other (default: both AI)
+  --input FILE.json      play timed input events: drags, throws, pushes, fight keys, settings (README: Scripted input)
+  --record FILE.json     write every input event of the run (the window's mouse and keys) in --input's form
   --clip NAME            stand / push: guard, and the clip NAME played once every 3 s (a drill of one clip)
   --servo-wn W           servo natural frequency omega_n, rad/s (default 15)
   --servo-zeta Z         servo damping ratio (default 1)
@@ -190,6 +192,11 @@ eng::Result<Options> parse_cli(const std::vector<std::string>& args) {
       if (!v) return missing();
       if (*v != "0" && *v != "1") return bad("--player must be 0 or 1, got '" + *v + "'");
       o.player = *v == "0" ? 0 : 1;
+    } else if (flag == "--input" || flag == "--record") {
+      auto v = value();
+      if (!v) return missing();
+      if (v->empty()) return bad(flag + " needs a file name (FILE.json)");
+      (flag == "--input" ? o.input : o.record) = *v;
     } else if (flag == "--render-every") {
       auto v = value();
       if (!v) return missing();

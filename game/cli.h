@@ -55,6 +55,9 @@ struct Options {
   // match
   double round_seconds = 180.0;       // --round-seconds: a round's length (the report's round counter)
   int player = -1;                    // --player 0|1: that boxer takes the keyboard (-1: both AI)
+  // the player's hands (game/interaction/)
+  std::string input;                  // --input FILE.json: timed input events (drags, throws, pushes, keys, settings)
+  std::string record;                 // --record FILE.json: every input event applied, in the same form
   // graph tool
   std::string graph_report;
   std::string graph_dot;

@@ -4,7 +4,7 @@ namespace boxing {
 
 namespace {
 constexpr Scenario kAll[] = {Scenario::Arena, Scenario::Ragdolls, Scenario::Stand,
-                             Scenario::Push,  Scenario::GraphWalk, Scenario::Match};
+                             Scenario::Push,  Scenario::GraphWalk, Scenario::Match, Scenario::Impacts};
 }
 
 const char* scenario_name(Scenario s) {
@@ -15,6 +15,7 @@ const char* scenario_name(Scenario s) {
     case Scenario::Push: return "push";
     case Scenario::GraphWalk: return "graph-walk";
     case Scenario::Match: return "match";
+    case Scenario::Impacts: return "impacts";
   }
   return "?";
 }

@@ -5,9 +5,9 @@
 
 namespace boxing {
 
-enum class Scenario { Arena, Ragdolls, Stand, Push, GraphWalk, Match };
+enum class Scenario { Arena, Ragdolls, Stand, Push, GraphWalk, Match, Impacts };
 
-// "arena" | "ragdolls" | "stand" | "push" | "graph-walk" | "match"
+// "arena" | "ragdolls" | "stand" | "push" | "graph-walk" | "match" | "impacts"
 const char* scenario_name(Scenario s);
 std::optional<Scenario> scenario_from_name(const std::string& name);
 

@@ -2,6 +2,9 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "engine/control/biped/capture_point.h"
+#include "engine/control/biped/support_polygon.h"
+#include "engine/physics/dynamics.h"
 #include "game/stance_ik.h"
 
 namespace boxing {
@@ -23,6 +26,79 @@ glm::vec4 rgba(const Eigen::Vector3f& c, float a = 1.0f) { return {c.x(), c.y(),
 
 // A body that blew up (NaN or far away) is not drawn: the rasteriser must never see non-finite vertices.
 bool drawable(const eng::physics::Pose& x) { return x.p.allFinite() && x.R.allFinite() && x.p.norm() < 1e4; }
+
+glm::vec3 gv(const Eigen::Vector3d& p) { return glm::vec3(float(p.x()), float(p.y()), float(p.z())); }
+
+// The mouse's spring: the grabbed point, the target and the line between, green at no force to red at the cap.
+void draw_interaction(const World& w, eng::render::FrameDesc& f) {
+  Eigen::Vector3d point, target;
+  double force = 0.0, max_force = 1.0;
+  if (!mouse_drag_state(w, point, target, force, max_force)) return;
+  const float k = float(std::clamp(force / max_force, 0.0, 1.0));
+  const glm::vec4 c(0.2f + 0.8f * k, 0.9f * (1.0f - k) + 0.1f, 0.15f, 1.0f);
+  f.lines.push_back({gv(point), gv(target), c});
+  for (int i = 1; i < 16; ++i) f.points.push_back({gv(point + (target - point) * (i / 16.0)), 4.0f, c});  // thick
+  f.points.push_back({gv(point), 10.0f, c});
+  f.points.push_back({gv(target), 7.0f, glm::vec4(1.0f, 1.0f, 1.0f, 1.0f)});
+}
+
+void draw_debug(const World& w, const DebugDrawFlags& dbg, eng::render::FrameDesc& f) {
+  const auto& d = w.data;
+  if (dbg.contacts)
+    for (const eng::physics::Contact& c : d.contacts) {
+      if (!eng::physics::is_touching(c)) continue;
+      const Eigen::Vector3d p = c.point.position;
+      f.points.push_back({gv(p), 4.0f, glm::vec4(1.0f, 0.95f, 0.2f, 1.0f)});
+      f.lines.push_back({gv(p), gv(p + c.force / 500.0), glm::vec4(1.0f, 0.6f, 0.1f, 1.0f)});
+    }
+  for (const Boxer& b : w.boxers) {
+    if (!(dbg.com || dbg.support || dbg.capture_point)) break;
+    // Whole-body centre of mass and its velocity (the articulation's linear momentum over its mass).
+    const int root = b.bodies.body[0];
+    const Eigen::Vector3d com = eng::physics::subtree_com(w.model, d, root);
+    double mass = 0.0;
+    for (int body : b.bodies.body) mass += w.model.bodies[body].mass;
+    const Eigen::Vector3d vcom = eng::physics::spatial_momentum(w.model, d, root).tail<3>() / std::max(mass, 1e-9);
+    double ground = 0.0;
+    int n = 0;
+    std::vector<Eigen::Vector2d> pts, hull;
+    for (int k = 0; k < 2; ++k)
+      for (const Eigen::Vector2d& p : b.ctl.contacts.ground_points[k]) {
+        pts.push_back(p);
+        ground += w.arena.top_at(p.x(), p.y());
+        ++n;
+      }
+    ground = n ? ground / n : w.arena.top_at(com.x(), com.y());
+    const float gz = float(ground) + 0.01f;
+    if (dbg.com) {
+      f.points.push_back({gv(com), 10.0f, glm::vec4(0.1f, 1.0f, 0.4f, 1.0f)});
+      f.lines.push_back({gv(com), glm::vec3(float(com.x()), float(com.y()), gz), glm::vec4(0.1f, 1.0f, 0.4f, 1.0f)});
+    }
+    if (dbg.support && pts.size() >= 2) {
+      eng::control::convex_hull_2d(pts, hull);
+      for (size_t i = 0; i < hull.size(); ++i) {
+        const Eigen::Vector2d& a = hull[i];
+        const Eigen::Vector2d& c = hull[(i + 1) % hull.size()];
+        f.lines.push_back({glm::vec3(float(a.x()), float(a.y()), gz), glm::vec3(float(c.x()), float(c.y()), gz),
+                           glm::vec4(0.2f, 0.8f, 1.0f, 1.0f)});
+      }
+    }
+    if (dbg.capture_point && com.z() - ground > 0.1) {
+      // The point to step on to come to rest (Pratt et al. 2006, eq. 7; engine/control/biped/capture_point.h).
+      const Eigen::Vector2d xi = eng::control::capture_point(com.head<2>(), vcom.head<2>(), com.z() - ground);
+      const glm::vec3 at(float(xi.x()), float(xi.y()), gz);
+      f.points.push_back({at, 11.0f, glm::vec4(1.0f, 0.25f, 0.85f, 1.0f)});
+      f.lines.push_back({glm::vec3(float(com.x()), float(com.y()), gz), at, glm::vec4(1.0f, 0.25f, 0.85f, 1.0f)});
+    }
+  }
+  if (dbg.hits)
+    for (const Interaction::Flash& fl : w.interaction.flashes) {
+      const double age = d.time - fl.t;
+      if (age < 0.0 || age > 0.35) continue;
+      const float k = float(1.0 - age / 0.35);
+      f.points.push_back({gv(fl.point), float(8.0 + 5.0 * std::min(fl.speed, 8.0)) * k, glm::vec4(1.0f, 0.9f, 0.3f, 1.0f)});
+  }
+}
 
 }  // namespace
 
@@ -65,6 +141,12 @@ SceneView make_scene_view(const World& w, eng::render::Renderer& r) {
   for (const LooseBody& l : w.loose)
     v.loose_mesh.push_back(r.upload_mesh(eng::render::make_box_mesh(glm::vec3(
         float(l.shape.half_extents.x()), float(l.shape.half_extents.y()), float(l.shape.half_extents.z())))));
+  for (const ThrownObject& o : w.interaction.objects) {
+    if (o.group == 0) continue;  // not from the pool: drawn as a loose body
+    v.object_mesh.push_back(o.kind == ObjectKind::Ball
+                                ? r.upload_mesh(eng::render::make_sphere_mesh(float(kBall.radius), 24))
+                                : r.upload_mesh(eng::render::make_box_mesh(glm::vec3(float(kCrate.half)))));
+  }
   v.boxer_parts = upload_character_parts(w.boxer_scene, w.boxer_desc, r);
   v.ghost = w.options.ghost;
   return v;
@@ -117,6 +199,23 @@ void fill_frame(const World& w, const SceneView& v, eng::render::FrameDesc& f) {
     in.material.roughness = 0.8f;
     f.opaque.push_back(in);
   }
+  // The interaction's thrown objects (pool order: balls in bright colours, crates in a paler wood).
+  for (size_t i = 0, mesh = 0; i < w.interaction.objects.size(); ++i) {
+    const ThrownObject& o = w.interaction.objects[i];
+    if (o.group == 0) continue;
+    const size_t m = mesh++;
+    if (!o.live || m >= v.object_mesh.size()) continue;
+    const auto& x = w.data.x[o.body];
+    if (!drawable(x)) continue;
+    static const glm::vec4 kBallColors[] = {{0.95f, 0.2f, 0.2f, 1}, {0.98f, 0.85f, 0.15f, 1}, {0.2f, 0.55f, 0.95f, 1},
+                                            {0.95f, 0.95f, 0.95f, 1}, {0.3f, 0.8f, 0.35f, 1}, {0.95f, 0.5f, 0.1f, 1}};
+    Instance in;
+    in.mesh = v.object_mesh[m];
+    in.model = to_mat4(x.R, x.p);
+    in.material.base_color = o.kind == ObjectKind::Ball ? kBallColors[i % 6] : glm::vec4(0.62f, 0.45f, 0.26f, 1.0f);
+    in.material.roughness = o.kind == ObjectKind::Ball ? 0.35f : 0.85f;
+    f.opaque.push_back(in);
+  }
   std::vector<Eigen::Quaterniond> W;
   std::vector<Eigen::Vector3d> P;
   for (const Boxer& b : w.boxers) {
@@ -142,6 +241,9 @@ void fill_frame(const World& w, const SceneView& v, eng::render::FrameDesc& f) {
       }
     }
   }
+  f.debug_on_top = true;  // the drag's spring and the debug drawing show through the bodies they sit in
+  draw_interaction(w, f);
+  draw_debug(w, v.debug, f);
   if (w.push_active && !w.boxers.empty()) {
     const Boxer& b = w.boxers[0];
     const int chest = b.bodies.body[w.boxer_desc.skeleton.find("chest")];

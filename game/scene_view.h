@@ -16,11 +16,22 @@ struct BonePart {
   bool team = false;  // takes the boxer's team colour
 };
 
+// What the debug drawing shows (the panel's checkboxes; keys 1-5).
+struct DebugDrawFlags {
+  bool contacts = false;       // contact points and their forces (1 m per 500 N)
+  bool com = false;            // each boxer's centre of mass and its ground projection
+  bool support = false;        // the support polygon: hull of the feet's ground contacts
+  bool capture_point = false;  // the instantaneous capture point (Pratt et al. 2006): com + v / omega0 on the ground
+  bool hits = true;            // hits on the boxers flash (punches, thrown objects)
+};
+
 struct SceneView {
   std::vector<eng::render::MeshId> crate_mesh;  // per arena crate
   std::vector<eng::render::MeshId> loose_mesh;  // per loose body
+  std::vector<eng::render::MeshId> object_mesh;  // per object of the interaction's pool (beach balls, crates)
   std::vector<BonePart> boxer_parts;
   bool ghost = false;
+  DebugDrawFlags debug;
 };
 
 // Uploads a glTF character's per-bone render meshes (materials named team / glove / shorts take a team colour).

@@ -126,6 +126,28 @@ void setup_implicit_servo(World& w, Boxer& b) {
 
 }  // namespace
 
+void configure_boxer_control(World& w, Boxer& b) {
+  // The content's passive joint damping back (the servo's springs are added on top by setup_implicit_servo).
+  for (int i = 0; i < w.boxer_desc.skeleton.size(); ++i) {
+    eng::physics::Body& body = w.model.bodies[b.bodies.body[i]];
+    body.stiffness = 0.0;
+    body.damping = w.boxer_desc.bones[i].damping;
+  }
+  // The balance controller: the QP for a servo rooted at the feet, else the PD layer. Kept when the kind is the
+  // same (its warm start and statistics carry on).
+  const bool qp = b.settings.balance_qp && b.settings.space != eng::control::ServoSpace::Parent &&
+                  b.settings.space != eng::control::ServoSpace::ParentMeathook;
+  if (qp && !b.uses_qp()) b.ctl.balance = QpBalance{};
+  if (!qp && b.uses_qp()) b.ctl.balance = PdBalance{};
+  // Under the balance QP the root spring is the QP's root assist (balance_qp.h): the plan chooses the torque.
+  if (QpBalance* q = std::get_if<QpBalance>(&b.ctl.balance)) {
+    q->params.w_root_assist = b.settings.root_params.enabled ? b.settings.tuning.root.assist_price : 0.0;
+    q->params.max_root_assist = b.settings.root_params.max_torque;
+    q->params.w_torque = b.settings.root_params.enabled ? b.settings.tuning.root.qp_torque_price : 0.0;
+  }
+  setup_implicit_servo(w, b);
+}
+
 void add_boxer(World& w, int index, const Eigen::Vector3f& color, bool limp, const Stance& stance) {
   Boxer b;
   b.index = index;
@@ -141,31 +163,23 @@ void add_boxer(World& w, int index, const Eigen::Vector3f& color, bool limp, con
   const uint32_t group = 2u << index;
   b.bodies = add_character(w.model, w.boxer_desc, "b" + std::to_string(index) + "_", group, 0xffffffffu, false);
   b.settings.space = servo_space_from_name(w.options.servo);
-  // The balance controller: the QP (--balance qp) for a servo rooted at the feet, else the PD layer.
-  if (!limp && w.options.balance == "qp" && b.settings.space != eng::control::ServoSpace::Parent &&
-      b.settings.space != eng::control::ServoSpace::ParentMeathook)
-    b.ctl.balance = QpBalance{};
-  else
-    b.ctl.balance = PdBalance{};
+  b.settings.balance_qp = w.options.balance == "qp";
   b.settings.gains.omega_n = w.options.servo_omega_n;
   b.settings.gains.zeta = w.options.servo_zeta;
   b.settings.gains.stable_pd = true;
   b.settings.gains.dt = kPhysicsDt;
   b.control_body = control_body_of(w.boxer_desc);
   b.ctl.servo.resize(w.boxer_desc.skeleton.size());
-  if (!limp) setup_implicit_servo(w, b);
   // The root spring: asked for, or (auto) for the paper's boxers, the graph walk and the match.
   const bool boxers = scenario_hooks(w.options.scenario_id).walks_graph;
   b.settings.root_params.enabled = !limp && (w.options.root_spring == "on" || (w.options.root_spring == "auto" && boxers));
+  const bool qp = !limp && b.settings.balance_qp && b.settings.space != eng::control::ServoSpace::Parent &&
+                  b.settings.space != eng::control::ServoSpace::ParentMeathook;
   b.settings.root_params.max_torque = w.options.root_spring_max >= 0.0 ? w.options.root_spring_max
-                                      : b.uses_qp()                   ? b.settings.tuning.root.assist_max
+                                      : qp                            ? b.settings.tuning.root.assist_max
                                                                       : b.settings.tuning.root.spring_max;
-  // Under the balance QP the root spring is the QP's root assist (balance_qp.h): the plan chooses the torque.
-  if (QpBalance* q = std::get_if<QpBalance>(&b.ctl.balance)) {
-    q->params.w_root_assist = b.settings.root_params.enabled ? b.settings.tuning.root.assist_price : 0.0;
-    q->params.max_root_assist = b.settings.root_params.max_torque;
-    q->params.w_torque = b.settings.root_params.enabled ? b.settings.tuning.root.qp_torque_price : 0.0;
-  }
+  if (!limp) configure_boxer_control(w, b);
+  else b.ctl.balance = PdBalance{};
   if (scenario_hooks(w.options.scenario_id).walks_graph) {
     // The paper's boxers: a seeded random walk of the motion graph (each boxer its own stream).
     b.source = PoseSource::graph_walk(w.graph, w.options.seed * 2654435761ull + uint64_t(index));
@@ -211,11 +225,20 @@ eng::Result<std::unique_ptr<World>> make_world(const Options& o) {
   if (scenario.walks_graph)
     w->graph.build(w->clips, eng::anim::GraphOptions{}, boxing_graph_options(w->boxer_desc.skeleton),
                    w->boxer_desc.skeleton);
+  std::vector<InputEvent> script;
+  if (!o.input.empty()) {
+    auto events = load_input_file(o.input);
+    if (!events) return eng::make_error(events.error());
+    script = std::move(*events);
+  }
   scenario.setup(*w, rng);
+  interaction_add_objects(*w);  // after the scenario's bodies: their indices do not depend on the pool
   w->model.finalize();
   w->data = eng::physics::make_data(w->model);
 
   scenario.place(*w, rng);
+  interaction_setup(*w, std::move(script));
+  w->interaction.recording = !o.record.empty();
   eng::physics::forward_kinematics(w->model, w->data);
   for (Boxer& b : w->boxers) boxer_sense_contacts(w->data, b);
   return w;
@@ -225,6 +248,7 @@ void step_world(World& w) {
   using clock = std::chrono::steady_clock;
   auto ms = [](clock::time_point a, clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
   const auto t0 = clock::now();
+  interaction_begin_step(w);  // input events due now: throws set coordinates, so before the step's first half
   eng::physics::clear_applied(w.data);
   // The step's first half (kinematics, contacts, rows, the mass matrix and c(q, v)) once, for the physics and for
   // every boxer's control: the balance QPs read their blocks of d.M_crba and d.qfrc_bias (MuJoCo's mj_step1 /
@@ -238,12 +262,14 @@ void step_world(World& w) {
   // The scenario's forces (the push scenario's chest push).
   w.push_active = false;
   if (scenario.before_step) scenario.before_step(w);
+  interaction_apply_forces(w);
   const auto t2 = clock::now();
 
   eng::physics::step2(w.model, w.data);
   const auto t3 = clock::now();
   for (Boxer& b : w.boxers) boxer_sense_contacts(w.data, b);
   for (Boxer& b : w.boxers) boxer_measure(w.model, w.data, w.boxer_desc, b, kPhysicsDt);
+  interaction_after_step(w);  // (the scenario's after_step reads this step's object hits)
   if (scenario.after_step) scenario.after_step(w);
   ++w.steps;
   const auto t4 = clock::now();
@@ -284,6 +310,7 @@ nlohmann::json world_report(const World& w) {
     }
     boxers.push_back({{"index", b.index},
                       {"servo", b.limp ? "limp" : servo_space_name(b.settings.space)},
+                      {"balance", b.limp ? "none" : b.uses_qp() ? "qp" : "pd"},
                       {"fell", m.fell},
                       {"fell_at_s", m.fell_at},
                       {"steps_taken", m.steps_taken},
@@ -318,7 +345,8 @@ nlohmann::json world_report(const World& w) {
                       {"physics_dt", kPhysicsDt},
                       {"physics_ms_per_step", w.steps ? w.physics_ms_total / w.steps : 0.0},
                       {"tick_profile_ms", tick_profile_report(w)},
-                      {"boxers", boxers}};
+                      {"boxers", boxers},
+                      {"interaction", interaction_report(w)}};
   if (const auto report = scenario_hooks(w.options.scenario_id).report) report(w, r);
   return r;
 }

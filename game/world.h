@@ -16,6 +16,7 @@
 #include "game/arena.h"
 #include "game/boxer.h"
 #include "game/cli.h"
+#include "game/interaction/interaction.h"
 #include "game/match/match.h"
 
 namespace boxing {
@@ -50,9 +51,10 @@ struct World {
   } profile;
   bool push_active = false;
   Match match;  // the match scenario's fight (game/match/match.h); inactive elsewhere
+  Interaction interaction;  // the player's hands: drags, thrown objects, scripted and recorded input
 };
 
-// Loads content (boxer, clips) from options.content_dir and builds the scenario.
+// Loads content (boxer, clips) from options.content_dir and builds the scenario (and --input's script).
 eng::Result<std::unique_ptr<World>> make_world(const Options& options);
 // One physics step: control, external pushes, physics, measurements.
 void step_world(World& w);

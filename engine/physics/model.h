@@ -58,6 +58,9 @@ struct Geom {
   int body = 0;   // 0 = static world geom (floor plane, crates)
   Pose local;     // geom frame in the body frame (for body 0: in the world)
   double friction = 0.8;  // Coulomb mu; a pair uses sqrt(mu_a * mu_b)
+  // Newton restitution e (0 = no bounce, the default); a pair uses max(e_a, e_b), only for contacts approaching
+  // faster than SolverOptions::restitution_threshold (step.h: the contact row's velocity target)
+  double restitution = 0.0;
   uint32_t group = 1, mask = 0xffffffffu;  // pair collides iff (a.group & b.mask) && (b.group & a.mask)
   bool self_collide = true;  // two geoms of one articulation collide only if both have self_collide
 };
@@ -78,6 +81,7 @@ struct SolverOptions {
   FrictionModel friction = FrictionModel::Cone;
   bool warm_start = true;
   double regularization = 1e-3;  // added to each row's J M^-1 J^T (1/kg): bounds degenerate rows
+  double restitution_threshold = 1.0;  // m/s: slower impacts do not bounce (Box2D's default), so objects settle
   int max_contacts = 512;  // capacity preallocated in make_data; extra contacts are dropped
 };
 

@@ -404,10 +404,19 @@ void prepare_constraints(const Model& m, Data& d) {
   }
   // approach speed of each contact before the solve (for hit events): -J_n v at the start of the step
   for (int r = 0; r < nr; ++r) {
-    const ConstraintRow& row = d.rows[r];
+    ConstraintRow& row = d.rows[r];
     if (row.kind != ConstraintRow::Normal) continue;
-    d.contacts[row.contact].approach_speed =
+    Contact& c = d.contacts[row.contact];
+    c.approach_speed =
         -sparse_dot(d.J_idx.data() + row.nz_begin, d.J_val.data() + row.nz_begin, row.nz_count, d.vtmp.data());
+    // Restitution as a velocity target (Catto, "Iterative Dynamics", GDC 2005): a fast approach leaves at
+    // e times its speed, rigidly (J v = e * approach); slow contacts keep the soft row above so they settle.
+    const double e = std::max(m.geoms[c.point.geom_a].restitution, m.geoms[c.point.geom_b].restitution);
+    if (e > 0.0 && c.approach_speed > so.restitution_threshold && row.C <= c.approach_speed * h) {
+      row.bias = std::min(row.bias, -e * c.approach_speed);
+      row.mass_scale = 1.0;
+      row.impulse_scale = 0.0;
+    }
   }
   // Each row only reaches the DoFs of its block(s) [j_begin, j_end) (M is block diagonal over the
   // articulations), so W_r = M^-1 J_r^T is stored packed over that range and every pass below costs

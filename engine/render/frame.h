@@ -73,6 +73,7 @@ struct FrameDesc {
   std::vector<DebugPoint> points;
   bool ground = true;  // large ground plane at z=0 with a subtle grid/canvas look
   bool overlay = false;  // draw the renderer's last UI frame (Renderer::ui()) over the scene
+  bool debug_on_top = false;  // lines and points drawn over everything (x-ray): springs and forces inside bodies
 };
 
 }  // namespace eng::render

@@ -310,8 +310,11 @@ eng::Result<void> create_pipelines(const VkContext& ctx, VkSampleCountFlagBits s
   points.input = Input::Point;
   points.depth_write = false;
   points.blend = true;
+  PipelineDesc lines_on_top = lines, points_on_top = points;
+  lines_on_top.depth_test = points_on_top.depth_test = false;
   const Job jobs[] = {{&p.shadow, shadow}, {&p.sky, sky},     {&p.ground, ground}, {&p.opaque, opaque},
-                      {&p.ghost, ghost},   {&p.lines, lines}, {&p.points, points}};
+                      {&p.ghost, ghost},   {&p.lines, lines}, {&p.points, points}, {&p.lines_on_top, lines_on_top},
+                      {&p.points_on_top, points_on_top}};
   for (const Job& j : jobs) {
     auto r = make_pipeline(ctx, p, samples, j.d);
     if (!r) return eng::make_error(r.error());
@@ -321,7 +324,7 @@ eng::Result<void> create_pipelines(const VkContext& ctx, VkSampleCountFlagBits s
 }
 
 void destroy_pipelines(const VkContext& ctx, Pipelines& p) {
-  for (VkPipeline pipe : {p.shadow, p.sky, p.ground, p.opaque, p.ghost, p.lines, p.points})
+  for (VkPipeline pipe : {p.shadow, p.sky, p.ground, p.opaque, p.ghost, p.lines, p.points, p.lines_on_top, p.points_on_top})
     if (pipe) vkDestroyPipeline(ctx.device, pipe, nullptr);
   if (p.layout) vkDestroyPipelineLayout(ctx.device, p.layout, nullptr);
   if (p.set_layout) vkDestroyDescriptorSetLayout(ctx.device, p.set_layout, nullptr);

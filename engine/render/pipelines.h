@@ -24,6 +24,7 @@ struct Pipelines {
   VkPipelineLayout layout = VK_NULL_HANDLE;
   VkPipeline shadow = VK_NULL_HANDLE, sky = VK_NULL_HANDLE, ground = VK_NULL_HANDLE, opaque = VK_NULL_HANDLE,
              ghost = VK_NULL_HANDLE, lines = VK_NULL_HANDLE, points = VK_NULL_HANDLE;
+  VkPipeline lines_on_top = VK_NULL_HANDLE, points_on_top = VK_NULL_HANDLE;  // no depth test (FrameDesc::debug_on_top)
 };
 
 eng::Result<void> create_pipelines(const VkContext& ctx, VkSampleCountFlagBits samples, Pipelines& p);

@@ -97,6 +97,19 @@ void actuate(QpBalance& q, BalanceTick& tick) {
     qc.mu = tq.mu;
     in.contacts.push_back(qc);
   }
+  // (The first tick has no solved contacts yet: d.prev_contacts is empty, the body is not in the air.)
+  const bool first_tick = q.ticks++ == 0;
+  if (in.contacts.empty() && !touching[0] && !touching[1] && !first_tick) {
+    // AIRBORNE (thrown, yanked up by the player's strong drag): with no ground the plan's com, momentum and foot
+    // tasks cannot be met, and it chased them with the limbs (600-2000 N m, gloves at 40-90 m/s, divergence within a
+    // second). The servo's own torques instead (explicit, as in the stand-up) diverged too: the legs' gains are sized
+    // for moving the body over a planted foot, and even the upper body's alone, on a free-floating body, ran away
+    // within 0.2 s under a strong drag. So in the air the body hangs on its passive joint damping (as when fallen)
+    // until a foot or a link touches the ground again.
+    for (int k = in.dof_begin; k < in.dof_end; ++k) d.tau[k] = 0.0;
+    b.ctl.root_torque.setZero();
+    return;
+  }
 
   // Desired pose FK (after anchoring / leg fitting): com and feet.
   std::vector<Eigen::Quaterniond>& Wd = b.scratch.fk_W;
@@ -206,13 +219,32 @@ void actuate(QpBalance& q, BalanceTick& tick) {
   for (int k = 0; k < 2; ++k) q.swing_prev[k] = !loaded[k] && !touching[k];
   // The solve's wall-clock cost, for the report only (boxers[i].qp.solve_us_median / p95); nothing reads it back.
   const auto t0 = std::chrono::steady_clock::now();
-  eng::control::balance_qp_solve(m, d, in, q.params, q.ws, q.out);
+  // On fewer than three contact points there is no support polygon: the ground cannot give the com and momentum
+  // targets, and a plan held to them swung the arms (1100 N m at the shoulder, gloves at 47 m/s) on a boxer the
+  // player had upended. There the com and momentum tasks are priced tq.few_contacts_task_scale times lower and the
+  // plan mostly tracks the pose. (Standing, walking and fighting: a few ticks a minute, one foot's edge.)
+  eng::control::BalanceQpParams& params = q.solve_params;
+  params = q.params;
+  if (int(in.contacts.size()) < tq.min_support_contacts && !first_tick) {
+    params.w_force *= tq.few_contacts_task_scale;
+    params.w_moment *= tq.few_contacts_task_scale;
+  }
+  eng::control::balance_qp_solve(m, d, in, params, q.ws, q.out);
   q.solve_us.record(std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count());
   // A non-finite solve (never seen standing; a guard) leaves the joints limp for the tick instead of poisoning the
   // whole simulation.
   const bool finite = q.out.tau.allFinite();
   // The root rows: the root assist's generalised force (zero when it is off).
   for (int k = 0; k < in.dof_end - in.dof_begin; ++k) d.tau[in.dof_begin + k] = finite ? q.out.tau[k] : 0.0;
+  // Strength: each joint's torque within tq.joint_torque_limit (a ball joint's as a vector), a guard. Standing,
+  // walking and fighting never reach it (largest seen in 60 s matches: 292 N m at a hip, 262 at a shoulder).
+  for (int bone = 1; bone < int(b.bodies.body.size()); ++bone) {
+    const eng::physics::Body& body = m.bodies[b.bodies.body[bone]];
+    if (body.nv == 0) continue;
+    auto t = d.tau.segment(body.v_index, body.nv);
+    const double n = t.norm();
+    if (n > tq.joint_torque_limit) t *= tq.joint_torque_limit / n;
+  }
   b.ctl.root_torque = finite ? q.out.root_assist : Eigen::Vector3d::Zero();
 }
 

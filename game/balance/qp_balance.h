@@ -29,6 +29,9 @@ struct BalanceQpTuning {
   double max_swing_speed = 3.0;       // m/s, the swing foot's feed-forward velocity bound
   double max_com_acc = 6.0;           // m/s^2, the desired com acceleration's bound
   double stance_drop = 0.04;          // m, the desired root this much below the clip's (knees bent deeper)
+  double joint_torque_limit = 500.0;  // N m per joint (vector norm): a guard, never reached in play
+  int min_support_contacts = 3;       // fewer contact points in the plan: no support polygon ...
+  double few_contacts_task_scale = 1e-2;  // ... and the com / momentum tasks priced this much lower
 };
 
 // The controller's state and workspace (inputs rebuilt every tick, capacity kept).
@@ -37,6 +40,8 @@ struct QpBalance {
   eng::control::BalanceQpParams params;  // prices and the root assist's limit (world.cpp, per tick the limit)
   eng::control::BalanceQp ws;
   eng::control::BalanceQpResult out;
+  long ticks = 0;
+  eng::control::BalanceQpParams solve_params;  // this tick's prices (params, lowered on a poor support)
   Eigen::Vector3d com_d_rel_last = Eigen::Vector3d::Zero();  // desired com - desired support centre, last tick
   bool have_com_d = false;
   int support_set = 0;  // which feet were planted last tick (bit 0 left, bit 1 right)

@@ -13,6 +13,7 @@ const ScenarioHooks& scenario_hooks(Scenario s) {
     case Scenario::Push: return kPushScenario;
     case Scenario::GraphWalk: return kGraphWalkScenario;
     case Scenario::Match: return kMatchScenario;
+    case Scenario::Impacts: return kImpactsScenario;
   }
   return kArenaScenario;
 }

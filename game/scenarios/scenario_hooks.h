@@ -33,6 +33,6 @@ void setup_boxers_on_stances(World& w, int count);
 void place_boxers_on_stances(World& w, Rng& rng);
 
 extern const ScenarioHooks kArenaScenario, kRagdollsScenario, kStandScenario, kPushScenario, kGraphWalkScenario,
-    kMatchScenario;
+    kMatchScenario, kImpactsScenario;
 
 }  // namespace boxing
