@@ -218,6 +218,7 @@ int run_windowed(const Options& o) {
   bool overlay = o.overlay_given ? o.overlay : true;
   PanelState panel;
   panel.seed = int(o.seed);
+  panel.slow = o.slow == 2 ? 1 : o.slow == 4 ? 2 : o.slow == 10 ? 3 : 0;
   MouseHands hands;
   bool left_was_down = false;
   FrameTimes sim, render;

@@ -74,6 +74,8 @@ flags:
   --player 0|1           match: the keyboard steers that boxer, the AI the other (default: both AI)
   --input FILE.json      play timed input events: drags, throws, pushes, fight keys, settings (README: Scripted input)
   --record FILE.json     write every input event of the run (the window's mouse and keys) in --input's form
+  --debug LIST           debug drawing: contacts,com,support,capture,hits (comma-separated; window keys 1-5)
+  --slow 1|2|4|10        window: start in slow motion (1/2, 1/4, 1/10; keys [ and ])
   --clip NAME            stand / push: guard, and the clip NAME played once every 3 s (a drill of one clip)
   --servo-wn W           servo natural frequency omega_n, rad/s (default 15)
   --servo-zeta Z         servo damping ratio (default 1)
@@ -197,6 +199,23 @@ eng::Result<Options> parse_cli(const std::vector<std::string>& args) {
       if (!v) return missing();
       if (v->empty()) return bad(flag + " needs a file name (FILE.json)");
       (flag == "--input" ? o.input : o.record) = *v;
+    } else if (flag == "--debug") {
+      auto v = value();
+      if (!v) return missing();
+      std::string rest = *v + ",";
+      for (size_t at = 0, comma; (comma = rest.find(',', at)) != std::string::npos; at = comma + 1) {
+        const std::string item = rest.substr(at, comma - at);
+        if (item != "contacts" && item != "com" && item != "support" && item != "capture" && item != "hits" &&
+            item != "none")
+          return bad("--debug takes a comma-separated list of contacts, com, support, capture, hits (or none), got '" +
+                     item + "'");
+      }
+      o.debug_draw = *v;
+    } else if (flag == "--slow") {
+      auto v = value();
+      if (!v) return missing();
+      if (*v != "1" && *v != "2" && *v != "4" && *v != "10") return bad("--slow must be 1, 2, 4 or 10, got '" + *v + "'");
+      o.slow = std::stoi(*v);
     } else if (flag == "--render-every") {
       auto v = value();
       if (!v) return missing();

@@ -58,6 +58,8 @@ struct Options {
   // the player's hands (game/interaction/)
   std::string input;                  // --input FILE.json: timed input events (drags, throws, pushes, keys, settings)
   std::string record;                 // --record FILE.json: every input event applied, in the same form
+  std::string debug_draw;             // --debug LIST: contacts,com,support,capture,hits (comma-separated) or none
+  int slow = 1;                       // --slow 1|2|4|10: the window's slow motion (1 = real time)
   // graph tool
   std::string graph_report;
   std::string graph_dot;

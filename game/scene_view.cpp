@@ -29,17 +29,22 @@ bool drawable(const eng::physics::Pose& x) { return x.p.allFinite() && x.R.allFi
 
 glm::vec3 gv(const Eigen::Vector3d& p) { return glm::vec3(float(p.x()), float(p.y()), float(p.z())); }
 
-// The mouse's spring: the grabbed point, the target and the line between, green at no force to red at the cap.
-void draw_interaction(const World& w, eng::render::FrameDesc& f) {
+void draw_spring(const World& w, int slot, eng::render::FrameDesc& f) {
   Eigen::Vector3d point, target;
   double force = 0.0, max_force = 1.0;
-  if (!mouse_drag_state(w, point, target, force, max_force)) return;
+  if (!drag_state(w, slot, point, target, force, max_force)) return;
   const float k = float(std::clamp(force / max_force, 0.0, 1.0));
   const glm::vec4 c(0.2f + 0.8f * k, 0.9f * (1.0f - k) + 0.1f, 0.15f, 1.0f);
   f.lines.push_back({gv(point), gv(target), c});
   for (int i = 1; i < 16; ++i) f.points.push_back({gv(point + (target - point) * (i / 16.0)), 4.0f, c});  // thick
   f.points.push_back({gv(point), 10.0f, c});
   f.points.push_back({gv(target), 7.0f, glm::vec4(1.0f, 1.0f, 1.0f, 1.0f)});
+}
+
+// The drags' springs (the mouse's and scripted ones): the grabbed point, the target and the line between, green at
+// no force to red at the cap.
+void draw_interaction(const World& w, eng::render::FrameDesc& f) {
+  for (int slot = 0; slot < int(w.interaction.drags.size()); ++slot) draw_spring(w, slot, f);
 }
 
 void draw_debug(const World& w, const DebugDrawFlags& dbg, eng::render::FrameDesc& f) {
@@ -149,6 +154,12 @@ SceneView make_scene_view(const World& w, eng::render::Renderer& r) {
   }
   v.boxer_parts = upload_character_parts(w.boxer_scene, w.boxer_desc, r);
   v.ghost = w.options.ghost;
+  const std::string& dbg = w.options.debug_draw;  // --debug: a comma-separated list (cli.cpp checked the names)
+  auto has = [&](const char* name) { return ("," + dbg + ",").find("," + std::string(name) + ",") != std::string::npos; };
+  if (!dbg.empty()) {
+    v.debug.contacts = has("contacts"), v.debug.com = has("com"), v.debug.support = has("support");
+    v.debug.capture_point = has("capture"), v.debug.hits = has("hits");
+  }
   return v;
 }
 

@@ -353,11 +353,11 @@ InputEvent grab_event(const World& w, const Pick& p, bool strong) {
   return e;
 }
 
-bool mouse_drag_state(const World& w, Eigen::Vector3d& point, Eigen::Vector3d& target, double& force,
-                      double& max_force) {
-  const HeldDrag& h = w.interaction.drags[0];
+bool drag_state(const World& w, int slot, Eigen::Vector3d& point, Eigen::Vector3d& target, double& force,
+                double& max_force) {
+  const HeldDrag& h = w.interaction.drags[slot];
   if (!h.active) return false;
-  const eng::physics::PointSpring& s = w.data.point_springs[0];
+  const eng::physics::PointSpring& s = w.data.point_springs[slot];
   point = world_point(w, h.body, h.local);
   target = h.goal;
   force = s.force.norm();

@@ -129,9 +129,9 @@ struct Pick {
 Pick interaction_pick(const World& w, const Eigen::Vector3d& origin, const Eigen::Vector3d& dir);
 // The grab event for a pick (the mouse's press).
 InputEvent grab_event(const World& w, const Pick& p, bool strong);
-// World position of the mouse drag's grabbed point and its target (when held).
-bool mouse_drag_state(const World& w, Eigen::Vector3d& point, Eigen::Vector3d& target, double& force,
-                      double& max_force);
+// A held drag's grabbed point (world), its target, the spring's force and cap (slot 0: the mouse); false when idle.
+bool drag_state(const World& w, int slot, Eigen::Vector3d& point, Eigen::Vector3d& target, double& force,
+                double& max_force);
 
 nlohmann::json interaction_report(const World& w);
 

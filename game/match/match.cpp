@@ -54,8 +54,15 @@ double reach_distance(const World& w, int k) {
   return (bone_centre(w, w.boxers[1 - k], mb.head) - bone_centre(w, w.boxers[k], mb.chest)).head<2>().norm();
 }
 
+// The pelvis over the ground under the feet now (the lower of the two tops: a boxer knocked off the platform
+// stands up on the floor, 0.3 m below its stance's crates, and is up all the same).
 double pelvis_height(const World& w, const Boxer& b) {
-  return w.data.x[b.bodies.body[0]].p.z() - std::min(b.stance.lead_top, b.stance.rear_top);
+  double ground = 1e9;
+  for (int k = 0; k < 2; ++k) {
+    const Eigen::Vector3d& p = w.data.x[b.bodies.body[b.bones.foot[k]]].p;
+    ground = std::min(ground, w.arena.top_at(p.x(), p.y()));
+  }
+  return w.data.x[b.bodies.body[0]].p.z() - ground;
 }
 
 GetUp down_at(int boxer, double t) {
