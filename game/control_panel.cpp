@@ -53,8 +53,9 @@ void draw_control_panel(World& w, SceneView& view, PanelState& p) {
     ImGui::PushID(b.index);
     char title[64];
     std::snprintf(title, sizeof title, "Boxer %d", b.index);
-    ImGui::TextColored(ImVec4(b.team_color.x() * 1.3f, b.team_color.y() * 1.3f, b.team_color.z() * 1.3f, 1.0f), "%s",
-                       title);
+    ImGui::TextColored(ImVec4(0.35f + 0.8f * b.team_color.x(), 0.35f + 0.8f * b.team_color.y(),
+                              0.35f + 0.8f * b.team_color.z(), 1.0f),
+                       "%s", title);
     int space = space_index(b);
     ImGui::SetNextItemWidth(100);
     if (ImGui::Combo("servo", &space, kSpaces, 3)) {
@@ -138,7 +139,12 @@ void draw_control_panel(World& w, SceneView& view, PanelState& p) {
   ImGui::SameLine();
   if (ImGui::Button("restart (F5)")) p.restart = true;
   ImGui::TextDisabled("left-drag grabs (Shift: strong, wheel: depth)");
-  ImGui::TextDisabled("T ball  Y crate  Backspace clear");
+  ImGui::TextDisabled("T ball  Y crate  Backspace clear  F5 restart");
+  ImGui::TextDisabled("F1/F2 servo  F3/F4 QP-PD  F6/F7 root spring");
+  if (w.match.active) {
+    ImGui::TextDisabled("fight: J jab  K cross  U/I hooks  N/M uppercuts");
+    ImGui::TextDisabled("       B block  A/D slip  S duck  W/X step");
+  }
   ImGui::End();
 }
 
