@@ -75,6 +75,7 @@ flags:
   --input FILE.json      play timed input events: drags, throws, pushes, fight keys, settings (README: Scripted input)
   --record FILE.json     write every input event of the run (the window's mouse and keys) in --input's form
   --debug LIST           debug drawing: contacts,com,support,capture,hits (comma-separated; window keys 1-5)
+  --chaos RATE           random drags, pushes and throws at RATE per second (seeded; the report's health block)
   --slow 1|2|4|10        window: start in slow motion (1/2, 1/4, 1/10; keys [ and ])
   --clip NAME            stand / push: guard, and the clip NAME played once every 3 s (a drill of one clip)
   --servo-wn W           servo natural frequency omega_n, rad/s (default 15)
@@ -211,6 +212,11 @@ eng::Result<Options> parse_cli(const std::vector<std::string>& args) {
                      item + "'");
       }
       o.debug_draw = *v;
+    } else if (flag == "--chaos") {
+      auto v = value();
+      if (!v) return missing();
+      if (!parse_double(*v, 0.0, 100.0, o.chaos))
+        return bad("--chaos must be a rate in events per second from 0 to 100, got '" + *v + "'");
     } else if (flag == "--slow") {
       auto v = value();
       if (!v) return missing();

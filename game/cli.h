@@ -60,6 +60,7 @@ struct Options {
   std::string record;                 // --record FILE.json: every input event applied, in the same form
   std::string debug_draw;             // --debug LIST: contacts,com,support,capture,hits (comma-separated) or none
   int slow = 1;                       // --slow 1|2|4|10: the window's slow motion (1 = real time)
+  double chaos = 0.0;                 // --chaos RATE: random input events per second (drags, pushes, throws)
   // graph tool
   std::string graph_report;
   std::string graph_dot;

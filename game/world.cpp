@@ -239,6 +239,7 @@ eng::Result<std::unique_ptr<World>> make_world(const Options& o) {
   scenario.place(*w, rng);
   interaction_setup(*w, std::move(script));
   w->interaction.recording = !o.record.empty();
+  chaos_setup(*w);
   eng::physics::forward_kinematics(w->model, w->data);
   for (Boxer& b : w->boxers) boxer_sense_contacts(w->data, b);
   return w;
@@ -248,6 +249,7 @@ void step_world(World& w) {
   using clock = std::chrono::steady_clock;
   auto ms = [](clock::time_point a, clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
   const auto t0 = clock::now();
+  chaos_begin_step(w);        // --chaos: maybe a random event, through the same path as the player's
   interaction_begin_step(w);  // input events due now: throws set coordinates, so before the step's first half
   eng::physics::clear_applied(w.data);
   // The step's first half (kinematics, contacts, rows, the mass matrix and c(q, v)) once, for the physics and for
@@ -270,6 +272,7 @@ void step_world(World& w) {
   for (Boxer& b : w.boxers) boxer_sense_contacts(w.data, b);
   for (Boxer& b : w.boxers) boxer_measure(w.model, w.data, w.boxer_desc, b, kPhysicsDt);
   interaction_after_step(w);  // (the scenario's after_step reads this step's object hits)
+  health_after_step(w);
   if (scenario.after_step) scenario.after_step(w);
   ++w.steps;
   const auto t4 = clock::now();
@@ -346,7 +349,8 @@ nlohmann::json world_report(const World& w) {
                       {"physics_ms_per_step", w.steps ? w.physics_ms_total / w.steps : 0.0},
                       {"tick_profile_ms", tick_profile_report(w)},
                       {"boxers", boxers},
-                      {"interaction", interaction_report(w)}};
+                      {"interaction", interaction_report(w)},
+                      {"health", health_report(w)}};
   if (const auto report = scenario_hooks(w.options.scenario_id).report) report(w, r);
   return r;
 }

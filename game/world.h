@@ -16,6 +16,7 @@
 #include "game/arena.h"
 #include "game/boxer.h"
 #include "game/cli.h"
+#include "game/interaction/chaos.h"
 #include "game/interaction/interaction.h"
 #include "game/match/match.h"
 
@@ -52,6 +53,8 @@ struct World {
   bool push_active = false;
   Match match;  // the match scenario's fight (game/match/match.h); inactive elsewhere
   Interaction interaction;  // the player's hands: drags, thrown objects, scripted and recorded input
+  Chaos chaos;              // --chaos: seeded random input events
+  Health health;            // measured every step (the report's health block)
 };
 
 // Loads content (boxer, clips) from options.content_dir and builds the scenario (and --input's script).

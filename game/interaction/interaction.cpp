@@ -20,9 +20,9 @@ constexpr double kDueSlack = 1e-9;  // s: an event at t applies at the first ste
 // Where a parked object waits (held there every step, colliding with nothing).
 Vec3 park_position(int k) { return Vec3(40.0 + 2.0 * k, 40.0, 5.0); }
 
-void set_free_state(const World& wc, World& w, int body, const Vec3& p, const Eigen::Quaterniond& r, const Vec3& v,
+void set_free_state(World& w, int body, const Vec3& p, const Eigen::Quaterniond& r, const Vec3& v,
                     const Vec3& omega_body) {
-  const auto& b = wc.model.bodies[body];
+  const auto& b = w.model.bodies[body];
   double* q = w.data.q.data() + b.q_index;
   q[0] = p.x(), q[1] = p.y(), q[2] = p.z(), q[3] = r.w(), q[4] = r.x(), q[5] = r.y(), q[6] = r.z();
   double* v6 = w.data.v.data() + b.v_index;
@@ -34,7 +34,7 @@ void park(World& w, int k) {
   o.live = false;
   w.model.geoms[o.geom].group = 0;
   w.model.geoms[o.geom].mask = 0;
-  set_free_state(w, w, o.body, park_position(k), Eigen::Quaterniond::Identity(), Vec3::Zero(), Vec3::Zero());
+  set_free_state(w, o.body, park_position(k), Eigen::Quaterniond::Identity(), Vec3::Zero(), Vec3::Zero());
 }
 
 int bone_body(const World& w, int boxer, const std::string& bone) {
@@ -119,12 +119,28 @@ void throw_object(World& w, const InputEvent& e) {
     const double T = 3.0 / e.speed;
     vel = Vec3(0.0, e.speed, (-0.2 + 0.5 * 9.81 * T * T) / T);
   }
+  // A free place to appear: above the crates or floor under it and above any object in play there (a throw at a
+  // boxer lying low started inside the crates; one started inside a resting crate: contacts 0.38 m deep).
+  auto extent = [](ObjectKind k) { return k == ObjectKind::Ball ? kBall.radius : kCrate.half * std::sqrt(3.0); };
+  const double ext = extent(e.object_kind);
+  double ground = 0.0;  // the highest top under the object's footprint
+  for (int i = -1; i <= 1; ++i)
+    for (int j = -1; j <= 1; ++j) ground = std::max(ground, w.arena.top_at(from.x() + i * ext, from.y() + j * ext));
+  from.z() = std::max(from.z(), ground + ext + 0.02);
+  for (int pass = 0; pass < 4; ++pass)
+    for (int k = 0; k < int(in.objects.size()); ++k) {
+      const ThrownObject& other = in.objects[k];
+      if (k == pick || !other.live) continue;
+      const Vec3 c = w.data.x[other.body].p;
+      const double reach = ext + (other.group == 0 ? 0.3 : extent(other.kind));
+      if ((from - c).norm() < reach) from.z() = c.z() + reach + 0.02;
+    }
   ThrownObject& o = in.objects[pick];
   o.live = true;
   o.thrown_at = w.data.time;
   w.model.geoms[o.geom].group = o.group;
   w.model.geoms[o.geom].mask = 0xffffffffu;
-  set_free_state(w, w, o.body, from, Eigen::Quaterniond::Identity(), vel, Vec3::Zero());
+  set_free_state(w, o.body, from, Eigen::Quaterniond::Identity(), vel, Vec3::Zero());
   ++in.objects_thrown;
 }
 
@@ -270,7 +286,7 @@ void interaction_begin_step(World& w) {
   for (int k = 0; k < int(in.objects.size()); ++k) {
     const ThrownObject& o = in.objects[k];
     if (o.group == 0) continue;
-    if (!o.live) set_free_state(w, w, o.body, park_position(k), Eigen::Quaterniond::Identity(), Vec3::Zero(), Vec3::Zero());
+    if (!o.live) set_free_state(w, o.body, park_position(k), Eigen::Quaterniond::Identity(), Vec3::Zero(), Vec3::Zero());
     else if (w.data.q[w.model.bodies[o.body].q_index + 2] < -3.0) park(w, k);
   }
 }

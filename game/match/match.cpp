@@ -114,6 +114,14 @@ void back_to_marks(World& w) {
     const Eigen::Vector2d shift = b.ctl.mark - b.desired.pose.root_position.head<2>();
     b.ctl.anchor += shift;
     b.desired.pose.root_position.head<2>() += shift;
+    // Up on the floor off the platform (knocked off it), the pose stood 0.3 m lower than its mark's crates: lifted
+    // onto them (else the feet were set inside the crates and the body stayed wedged there).
+    bool off_platform = true;
+    for (int k = 0; k < 2; ++k) {
+      const Eigen::Vector3d& p = w.data.x[b.bodies.body[b.bones.foot[k]]].p;
+      off_platform = off_platform && w.arena.top_at(p.x(), p.y()) == 0.0;
+    }
+    if (off_platform) b.desired.pose.root_position.z() += std::min(b.stance.lead_top, b.stance.rear_top);
     set_character_pose(w.model, w.data, b.bodies, w.boxer_desc, b.desired.pose.root_position, b.desired.pose.rotation);
     b.ctl.have_support_base = false;
     for (auto& s : b.ctl.step) s.active = false;

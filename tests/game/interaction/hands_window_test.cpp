@@ -1,8 +1,8 @@
 // The player's hands as a person uses them: the window build under the X server (scripts/test runs the suite in
 // Xvfb), xdotool's mouse and keys. A left-drag from boxer 0's head pulls the head toward the cursor (the physics
 // state in the report, not pixels) and the boxer recovers after the release; T throws a beach ball at the cursor that
-// hits boxer 1; a click on the panel switches boxer 0 to the PD balance and F2 switches boxer 1's servo to person
-// space. The session's recording (--record) played back headless gives the same run, bit for bit.
+// hits boxer 1; clicks on the panel switch boxer 0's servo to person space (its combo) and boxer 1 to the PD balance
+// (a radio button), and F2 steps boxer 1's servo. The session's recording (--record) played back headless gives the same run, bit for bit.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -48,7 +48,7 @@ TEST(HandsWindow, DragThrowAndPanelClickAsAPersonAndTheRecordingReplaysBitForBit
   const std::string exe = std::string(BOXING_BINARY_DIR) + "/boxing";
   const std::string W = "--window $win ";
   std::string cmd =
-      "(timeout 150 " + exe + " --scenario stand --seed 1 --seconds 9 --no-vsync --camera side --width 1280 "
+      "(timeout 150 " + exe + " --scenario stand --seed 1 --seconds 20 --no-vsync --camera side --width 1280 "
       "--height 720 --report " + report + " --record " + record + " >/dev/null 2>&1 &) ; "
       "win=$(timeout 60 xdotool search --sync --onlyvisible --name 'Boxing - stand' | head -1) && "
       "timeout 10 xdotool windowfocus $win && sleep 2 && "
@@ -60,8 +60,12 @@ TEST(HandsWindow, DragThrowAndPanelClickAsAPersonAndTheRecordingReplaysBitForBit
          // the throw: the cursor on boxer 1's chest, T
          "xdotool mousemove " + W + std::to_string(cx) + " " + std::to_string(cy) + " && sleep 0.4 && "
          "xdotool key " + W + "t && sleep 1.5 && "
-         // the panel: boxer 0's PD radio (the panel's top-right corner is fixed: 340 px wide, 10 px from the edges)
-         "xdotool mousemove " + W + "1140 63 && sleep 0.4 && xdotool mousedown 1 && sleep 0.4 && xdotool mouseup 1 && "
+         // the panel (its top-right corner is fixed: 340 px wide, 10 px from the edges): boxer 0's servo combo opened,
+         // "person" chosen in its list; boxer 1's PD radio
+         "xdotool mousemove " + W + "980 63 && sleep 0.4 && xdotool mousedown 1 && sleep 0.4 && xdotool mouseup 1 && "
+         "sleep 0.6 && xdotool mousemove " + W + "962 105 && sleep 0.4 && xdotool mousedown 1 && sleep 0.4 && "
+         "xdotool mouseup 1 && sleep 0.6 && "
+         "xdotool mousemove " + W + "1140 176 && sleep 0.4 && xdotool mousedown 1 && sleep 0.4 && xdotool mouseup 1 && "
          "sleep 0.4 && xdotool mousemove " + W + "640 650 && sleep 0.3 && xdotool key " + W + "F2; "
          "for i in $(seq 1 240); do [ -s " + report + " ] && break; sleep 0.5; done";
   const std::string script = dir + "/session.sh";  // $(...) and $win must reach bash, not std::system's sh -c
@@ -83,8 +87,11 @@ TEST(HandsWindow, DragThrowAndPanelClickAsAPersonAndTheRecordingReplaysBitForBit
   bool ball_on_1 = false;
   for (const auto& h : in["object_hits"]) ball_on_1 = ball_on_1 || (h["boxer"] == 1 && h["object"] == "ball");
   EXPECT_TRUE(ball_on_1) << in["object_hits"].dump();
-  // The panel click and the key.
-  EXPECT_EQ(r["boxers"][0]["balance"], "pd");
+  // The panel's clicks and the key: boxer 0 in person space (the combo), boxer 1 on the PD balance (the radio) and,
+  // F2, its servo stepped from world to person space.
+  EXPECT_EQ(r["boxers"][0]["servo"], "person");
+  EXPECT_EQ(r["boxers"][0]["balance"], "qp");
+  EXPECT_EQ(r["boxers"][1]["balance"], "pd");
   EXPECT_EQ(r["boxers"][1]["servo"], "person");
 
   // The recording, played headless for the same time: the same run (every measurement of both boxers, the hands').

@@ -281,3 +281,33 @@ TEST(Interaction, RecordedSessionReplaysBitForBit) {
   EXPECT_EQ(b->boxers[0].settings.space, eng::control::ServoSpace::Person);
   EXPECT_FALSE(b->boxers[0].uses_qp());
 }
+
+// The hands hold thrown objects too: a grabbed ball follows its target, and clear() lets go of it and parks it.
+TEST(Interaction, AGrabbedBallFollowsTheTargetAndClearLetsGoAndParksIt) {
+  InputEvent t;
+  t.kind = InputKind::Throw;
+  t.t = 0.5;
+  t.object_kind = boxing::ObjectKind::Ball;
+  t.from = Eigen::Vector3d(0.0, -2.0, 0.3);
+  t.velocity = Eigen::Vector3d::Zero();
+  InputEvent g;
+  g.kind = InputKind::Grab;
+  g.t = 2.0;
+  g.object = 0;
+  InputEvent m;
+  m.kind = InputKind::Move;
+  m.t = 2.1;
+  m.vec = Eigen::Vector3d(0.5, -2.0, 1.2);
+  InputEvent c;
+  c.kind = InputKind::Clear;
+  c.t = 4.0;
+  auto w = make({"--scenario", "stand", "--seed", "1"}, {t, g, m, c});
+  const int ball = w->interaction.objects[0].body;
+  run_until(*w, 3.5);
+  EXPECT_TRUE(w->interaction.drags[0].active);
+  EXPECT_LT((w->data.com_world[ball] - m.vec).norm(), 0.05);  // held at the target against gravity
+  run_until(*w, 4.1);
+  EXPECT_FALSE(w->interaction.drags[0].active);
+  EXPECT_FALSE(w->interaction.objects[0].live);
+  EXPECT_GT(w->data.com_world[ball].z(), 3.0);  // parked, away from the arena
+}
