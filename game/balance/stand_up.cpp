@@ -12,8 +12,13 @@ void actuate_stand_up(BalanceTick& tick, const StandUpTuning& t) {
   Boxer& b = tick.b;
   const int n = tick.desc.skeleton.size();
   const int pelvis = b.bodies.body[0];
-  // Every joint: eq. 3's world torque toward the get-up clip, on the bone and (reaction) on its parent.
-  for (int i = 1; i < n; ++i) eng::physics::apply_world_torque_with_reaction(m, d, b.bodies.body[i], b.ctl.servo.tau[i]);
+  // Every joint: eq. 3's world torque toward the get-up clip, on the bone and (reaction) on its parent, within the
+  // joint's strength (StandUpTuning::joint_torque_limit).
+  for (int i = 1; i < n; ++i) {
+    Eigen::Vector3d tau = b.ctl.servo.tau[i];
+    if (tau.norm() > t.joint_torque_limit) tau *= t.joint_torque_limit / tau.norm();
+    eng::physics::apply_world_torque_with_reaction(m, d, b.bodies.body[i], tau);
+  }
   // The root assist toward the clip's root, at full strength whatever the consciousness (a stand-up is the moment the
   // boxer pulls itself together; the servo's gains stay scaled).
   const eng::control::RootSpring full;
