@@ -72,10 +72,11 @@ void actuate(QpBalance& q, BalanceTick& tick) {
     for (int k = in.dof_begin; k < in.dof_end; ++k) d.tau[k] = 0.0;
     // ... on the ground only: lifted off it (a strong drag, a crate) those explicit torques diverged within 0.1 s
     // (the chaos soak, match seed 11), as the QP's did in the air (below). In the air: limp.
-    bool on_ground = false;
-    for (const auto& c : d.prev_contacts)
-      on_ground = on_ground || ((c.body_a == 0) != (c.body_b == 0) && m.bodies[c.body_a == 0 ? c.body_b : c.body_a].root == pelvis &&
-                                c.point.depth >= -tq.touch_gap);
+    bool on_ground = false;  // a link of this boxer touching the crates or the floor (last solve's contacts)
+    for (const auto& c : d.prev_contacts) {
+      if ((c.body_a == 0) == (c.body_b == 0) || c.point.depth < -tq.touch_gap) continue;
+      on_ground = on_ground || m.bodies[c.body_a == 0 ? c.body_b : c.body_a].root == pelvis;
+    }
     if (on_ground) actuate_stand_up(tick, b.settings.tuning.stand_up);
     else b.ctl.root_torque.setZero(), b.ctl.root_force.setZero();
     return;
