@@ -3,6 +3,7 @@
 #include <GLFW/glfw3.h>
 
 #include <cstdio>
+#include <optional>
 
 #include "game/world.h"
 #include "imgui.h"
@@ -20,6 +21,16 @@ int space_index(const Boxer& b) {
   for (int i = 0; i < 3; ++i)
     if (std::string(name) == kSpaces[i]) return i;
   return 0;
+}
+
+// A slider whose value goes out once the drag on it ends (a set event per release, not one per frame of the drag).
+std::optional<double> edited_slider(const char* label, double value, float lo, float hi, const char* format,
+                                    float width) {
+  float v = float(value);
+  ImGui::SetNextItemWidth(width);
+  ImGui::SliderFloat(label, &v, lo, hi, format);
+  if (!ImGui::IsItemDeactivatedAfterEdit()) return std::nullopt;
+  return double(v);
 }
 
 InputEvent set_event(int boxer) {
@@ -73,12 +84,9 @@ void draw_control_panel(World& w, SceneView& view, PanelState& p) {
       e.balance = qp == 0 ? "qp" : "pd";
       interaction_submit(w, e);
     }
-    float wn = float(b.settings.gains.omega_n);
-    ImGui::SetNextItemWidth(150);
-    ImGui::SliderFloat("gain wn", &wn, 5.0f, 40.0f, "%.1f rad/s");
-    if (ImGui::IsItemDeactivatedAfterEdit()) {
+    if (auto wn = edited_slider("gain wn", b.settings.gains.omega_n, 5.0f, 40.0f, "%.1f rad/s", 150)) {
       InputEvent e = set_event(b.index);
-      e.omega_n = wn;
+      e.omega_n = *wn;
       interaction_submit(w, e);
     }
     bool root = b.settings.root_params.enabled;
@@ -88,20 +96,14 @@ void draw_control_panel(World& w, SceneView& view, PanelState& p) {
       interaction_submit(w, e);
     }
     ImGui::SameLine();
-    float limit = float(b.settings.root_params.max_torque);
-    ImGui::SetNextItemWidth(110);
-    ImGui::SliderFloat("##limit", &limit, 0.0f, 1000.0f, "%.0f N m");
-    if (ImGui::IsItemDeactivatedAfterEdit()) {
+    if (auto limit = edited_slider("##limit", b.settings.root_params.max_torque, 0.0f, 1000.0f, "%.0f N m", 110)) {
       InputEvent e = set_event(b.index);
-      e.root_limit = limit;
+      e.root_limit = *limit;
       interaction_submit(w, e);
     }
-    float c = float(b.ctl.root_spring.consciousness());
-    ImGui::SetNextItemWidth(150);
-    ImGui::SliderFloat("conscious", &c, 0.0f, 1.0f, "%.2f");
-    if (ImGui::IsItemDeactivatedAfterEdit()) {
+    if (auto c = edited_slider("conscious", b.ctl.root_spring.consciousness(), 0.0f, 1.0f, "%.2f", 150)) {
       InputEvent e = set_event(b.index);
-      e.consciousness = c;
+      e.consciousness = *c;
       interaction_submit(w, e);
     }
     if (w.match.active && b.index < 2) {

@@ -45,6 +45,17 @@ InputEvent drag(double t, int boxer, const char* bone, Eigen::Vector3d offset, d
   return e;
 }
 
+// A throw of a ball or crate from a point with a velocity (world), at t.
+InputEvent throw_from(double t, boxing::ObjectKind kind, Eigen::Vector3d from, Eigen::Vector3d velocity) {
+  InputEvent e;
+  e.kind = InputKind::Throw;
+  e.t = t;
+  e.object_kind = kind;
+  e.from = from;
+  e.velocity = velocity;
+  return e;
+}
+
 int body_of(const World& w, int boxer, const char* bone) {
   return w.boxers[boxer].bodies.body[w.boxer_desc.skeleton.find(bone)];
 }
@@ -127,12 +138,8 @@ TEST(Interaction, BeachBallsDoNotFloorABoxerACrateAtEightMetresPerSecondDoes) {
 
 // Thrown balls are bouncy and settle: a ball dropped onto the floor comes back up, then lies still on it.
 TEST(Interaction, AThrownBallBouncesRollsAndSettlesOnTheFloor) {
-  InputEvent t;
-  t.kind = InputKind::Throw;
-  t.t = 0.5;
-  t.object_kind = boxing::ObjectKind::Ball;
-  t.from = Eigen::Vector3d(0.0, -2.5, 2.0);
-  t.velocity = Eigen::Vector3d(0.0, -1.0, 0.0);
+  const InputEvent t =
+      throw_from(0.5, boxing::ObjectKind::Ball, Eigen::Vector3d(0.0, -2.5, 2.0), Eigen::Vector3d(0.0, -1.0, 0.0));
   auto w = make({"--scenario", "stand", "--seed", "1"}, {t});
   const int ball = w->interaction.objects[0].body;
   run_until(*w, 0.6);
@@ -284,12 +291,7 @@ TEST(Interaction, RecordedSessionReplaysBitForBit) {
 
 // The hands hold thrown objects too: a grabbed ball follows its target, and clear() lets go of it and parks it.
 TEST(Interaction, AGrabbedBallFollowsTheTargetAndClearLetsGoAndParksIt) {
-  InputEvent t;
-  t.kind = InputKind::Throw;
-  t.t = 0.5;
-  t.object_kind = boxing::ObjectKind::Ball;
-  t.from = Eigen::Vector3d(0.0, -2.0, 0.3);
-  t.velocity = Eigen::Vector3d::Zero();
+  const InputEvent t = throw_from(0.5, boxing::ObjectKind::Ball, Eigen::Vector3d(0.0, -2.0, 0.3), Eigen::Vector3d::Zero());
   InputEvent g;
   g.kind = InputKind::Grab;
   g.t = 2.0;
