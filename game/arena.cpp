@@ -25,7 +25,7 @@ Stance stance_at(const Arena& a, const Eigen::Vector2d& position, double heading
   return s;
 }
 
-Arena make_arena(uint64_t seed, double min_step, double separation) {
+Arena make_arena(uint64_t seed, double min_step, double separation, bool flat) {
   Rng rng(seed * 0x9E3779B97F4A7C15ull + 17);
   Arena a;
   constexpr int kNx = 6, kNy = 4;  // 3 m x 2 m platform
@@ -33,7 +33,7 @@ Arena make_arena(uint64_t seed, double min_step, double separation) {
   const double x0 = -0.5 * kNx * cell, y0 = -0.5 * kNy * cell;
   double height[kNx][kNy];
   for (int i = 0; i < kNx; ++i)
-    for (int j = 0; j < kNy; ++j) height[i][j] = 0.30 + rng.uniform(-0.10, 0.14);
+    for (int j = 0; j < kNy; ++j) height[i][j] = flat ? 0.30 : 0.30 + rng.uniform(-0.10, 0.14);
 
   // Boxers face each other along X: boxer 0 at -X facing +X, boxer 1 at +X facing -X.
   const double sx = 0.5 * separation;
@@ -55,7 +55,7 @@ Arena make_arena(uint64_t seed, double min_step, double separation) {
     // sign of which foot is higher.
     double& hl = height[li][lj];
     double& hr = height[ri][rj];
-    if (std::abs(hl - hr) < min_step) {
+    if (!flat && std::abs(hl - hr) < min_step) {
       const double mid = 0.5 * (hl + hr);
       const double sign = rng.uniform() < 0.5 ? -1.0 : 1.0;
       hl = mid + sign * 0.5 * (min_step + 0.02);

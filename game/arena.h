@@ -40,7 +40,8 @@ inline eng::control::GroundHeight ground_of(const Arena& a) {
   return {&a, [](const void* c, double x, double y) { return static_cast<const Arena*>(c)->top_at(x, y); }};
 }
 
-Arena make_arena(uint64_t seed, double min_step = 0.10, double separation = 1.20);
+// flat: every crate 0.30 m high (the papers' level floor, for like-for-like push comparisons; --flat).
+Arena make_arena(uint64_t seed, double min_step = 0.10, double separation = 1.20, bool flat = false);
 // A stance at a pelvis position and heading: the tops under its lead and rear feet read from the arena.
 Stance stance_at(const Arena& a, const Eigen::Vector2d& position, double heading);
 

@@ -122,7 +122,13 @@ void fit_support_legs(const eng::physics::Model& m, eng::physics::Data& d, const
       err += (d.x[b.bodies.body[legs[k].foot]].p - P0[legs[k].foot]).head<2>();
       ++planted;
     }
-    if (planted > 0 && !b.ctl.state.fallen()) {  // a fallen body's feet anchor nothing (the walk goes on as authored)
+    if (b.ctl.balance_steps.step.active) {
+      // A balance step under way: the desired body goes where the pelvis is (the push carried it; the legs' targets
+      // then reach from there, and the QP's com task does the balancing) instead of hauling it back over its feet.
+      const Eigen::Vector2d e = (d.x[b.bodies.body[0]].p - b.desired.pose.root_position).head<2>();
+      b.ctl.anchor += e;
+      b.desired.pose.root_position.head<2>() += e;
+    } else if (planted > 0 && !b.ctl.state.fallen()) {  // a fallen body's feet anchor nothing (the walk goes on as authored)
       err /= planted;
       b.ctl.anchor += err;
       b.desired.pose.root_position.head<2>() += err;
@@ -205,6 +211,7 @@ void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const en
     b.desired.pose.root_position.head<2>() += back;
   }
   if (steps) plan_steps(d, desc, arena, b, swing, dt);
+  if (steps && d.time > 0.0) take_balance_steps(m, d, desc, arena, b, swing, dt);
   if (b.limp) return;
   const bool parent_space = b.settings.space == ServoSpace::Parent || b.settings.space == ServoSpace::ParentMeathook;
   bool loaded[2] = {d.time == 0.0, d.time == 0.0};  // placed on the crates: planted at the start

@@ -10,6 +10,7 @@
 
 #include "engine/anim/clip.h"
 #include "engine/assets/character.h"
+#include "engine/control/biped/balance_step.h"
 #include "engine/control/biped/biped_bones.h"
 #include "engine/control/biped/foot_contacts.h"
 #include "engine/control/biped/foot_geometry.h"
@@ -39,6 +40,8 @@ struct BoxerMetrics {
   Eigen::Vector3d fell_pelvis = Eigen::Vector3d::Zero();  // where the pelvis was at the fall (world, m)
   double time_upright = 0.0;
   int steps_taken = 0, steps_skipped = 0;  // balance QP: the clip's steps lifted off / held down (gate_lift_off)
+  int balance_steps = 0, return_steps = 0;  // balance QP: steps the balance took (balance_step.h), steps back to the stance
+  int most_steps_in_recovery = 0;           // the longest multi-step recovery
   double max_com_speed = 0.0;
   // Root spring use (external torque on the pelvis, no reaction): sum of |tau|^2 dt, peak |tau|, time at its limit.
   double root_torque_sq_dt = 0.0, root_torque_peak = 0.0, root_saturated_time = 0.0;
@@ -66,6 +69,8 @@ struct BoxerSettings {
   eng::control::RootSpringParams root_params;  // enabled per scenario (world.cpp), off = no root help
   BoxerTuning tuning;                          // every tuning value of the boxer's control (boxer_tuning.h)
   bool balance_qp = true;  // the balance QP where the servo space allows (world / person), else the PD layer
+  bool stepping = true;    // balance QP: balance steps when the capture point leaves the feet (--stepping)
+  eng::control::StepPlacement placement = eng::control::StepPlacement::CapturePoint;  // where (--step-placement)
 };
 
 // Controller state carried from tick to tick.
@@ -82,6 +87,8 @@ struct BoxerControlState {
   // Balance QP: the step each foot is taking (step_planner.h) and its lift-off gate (lift_off_gate.h).
   eng::control::StepPlan step[2];
   eng::control::LiftGate gate[2];
+  eng::control::BalanceStepState balance_steps;  // balance QP: the balance's own steps (balance_step.h)
+  eng::control::CartPoleLqr step_lqr;            // StepPlacement::InvertedPendulumLqr's gain (solved at setup)
   double support_base = 0.0;  // balance QP: the clip's floor height under the actual feet (low-passed)
   bool have_support_base = false;
   double person_heading = 0.0;  // person space: low-passed pelvis heading (boxer_control)
@@ -106,7 +113,8 @@ struct BoxerScratch {
   std::vector<Eigen::Quaterniond> W_a;  // actual world orientation per bone
   std::vector<Eigen::Vector3d> omega_a;  // actual world angular velocity per bone
   std::vector<Eigen::Vector3d> q_joint, spring_ref;  // implicit servo: joint rotations, spring references
-  std::vector<Eigen::Vector2d> hull;  // lift-off gate
+  std::vector<Eigen::Vector2d> hull, pts;  // lift-off gate, balance steps
+  std::vector<Eigen::Vector2d> sole_corners[2], stance_hull;  // balance steps: the soles on the ground, one's hull
 };
 
 struct Boxer {

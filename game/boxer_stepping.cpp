@@ -6,6 +6,8 @@
 #include <cmath>
 
 #include "engine/control/biped/capture_point.h"
+#include "engine/control/biped/support_polygon.h"
+#include "engine/control/servo/person_space.h"
 #include "engine/control/servo/world_pose.h"
 #include "engine/physics/dynamics.h"
 #include "game/boxer.h"
@@ -78,6 +80,7 @@ void plan_steps(const eng::physics::Data& d, const eng::assets::CharacterDesc& d
   eng::control::Touchdown td[2];
   for (int k = 0; k < 2; ++k) {
     if (!swing[k]) b.ctl.step[k].active = false;
+    b.ctl.step[k].has_velocity = false;
     if (!swing[k] || b.ctl.step[k].active) continue;
     starts[k] = true;
     td[k] = touchdown_of(skel, b, k);
@@ -95,6 +98,152 @@ void plan_steps(const eng::physics::Data& d, const eng::assets::CharacterDesc& d
     }
     eng::control::advance_step(st, P[feet[k]], W[feet[k]], ground, b.settings.tuning.foot, b.settings.tuning.step, dt);
   }
+}
+
+}  // namespace boxing
+
+namespace boxing {
+
+// BALANCE STEPS (balance_step.h): Yin & van de Panne's three phases on the balance QP. Measurements:
+// docs/decisions/balance-steps.md.
+void take_balance_steps(const eng::physics::Model& m, const eng::physics::Data& d,
+                        const eng::assets::CharacterDesc& desc, const Arena& arena, Boxer& b, bool swing[2], double dt) {
+  eng::control::BalanceStepState& st = b.ctl.balance_steps;
+  eng::control::BalanceStep& s = st.step;
+  const eng::control::BalanceStepTuning& t = b.settings.tuning.balance_step;
+  const eng::control::FootGeometry& g = b.settings.tuning.foot;
+  if (b.limp || b.ctl.state.fallen() || b.ctl.state.state == BoxerState::GettingUp) {
+    st = {};
+    return;
+  }
+  if (!b.settings.stepping && !s.active && st.shifting < 0) return;  // --stepping off: in place
+  const int* feet = b.bones.foot;
+  const int pelvis = b.bodies.body[0];
+  const Eigen::Vector3d com = eng::physics::subtree_com(m, d, pelvis);
+  const Eigen::Vector2d vcom = eng::physics::spatial_momentum(m, d, pelvis).tail<3>().head<2>() / b.control_body.total_mass;
+  const double omega = eng::control::lip_omega(com.z() - b.ctl.support_base);
+  const Eigen::Vector2d xi = com.head<2>() + vcom / omega;
+  Eigen::Vector2d sole[2];
+  double yaw[2];
+  // What each foot can hold: its sole's rectangle on the floor while it touches the ground (the centre of pressure
+  // can go anywhere in it; the contact points alone, a foot on its edge for a moment, made a hull the com at rest
+  // stood outside of, and a step was taken for nothing).
+  std::vector<Eigen::Vector2d>* corners = b.scratch.sole_corners;
+  std::vector<Eigen::Vector2d>& stance_hull = b.scratch.stance_hull;
+  const eng::control::SoleShape& shape = b.settings.tuning.step.foothold.sole;
+  for (int k = 0; k < 2; ++k) {
+    const int fb = b.bodies.body[feet[k]];
+    sole[k] = (d.x[fb].p + d.x[fb].R * g.centre).head<2>();
+    yaw[k] = eng::control::heading_of(Eigen::Quaterniond(d.x[fb].R));
+    corners[k].clear();
+    if (!b.ctl.contacts.on_ground[k]) continue;
+    const Eigen::Rotation2Dd R(yaw[k]);
+    const Eigen::Vector2d a = d.x[fb].p.head<2>();
+    for (double x : {shape.heel, shape.toe})
+      for (double y : {-shape.half_width, shape.half_width}) corners[k].push_back(a + R * Eigen::Vector2d(x, y));
+  }
+  const eng::control::GroundHeight ground = ground_of(arena);
+  if (s.active) {
+    s.elapsed += dt;
+    // Touch-down: the sole on the ground past the swing's middle, or late: set down where it is.
+    const bool down = b.ctl.contacts.on_ground[s.foot] && s.elapsed > 0.6 * s.duration;
+    if (!s.returning && s.elapsed < t.replan_until * s.duration && !corners[1 - s.foot].empty()) {
+      // Re-planned from the body's state now, for the swing's time left.
+      eng::control::convex_hull_2d(corners[1 - s.foot], stance_hull);
+      eng::control::BalanceStepTuning left = t;
+      left.min_duration = std::max(0.05, s.duration - s.elapsed);
+      left.swing_speed = 1e9;  // the time left is what it is
+      const eng::control::StepLanding land = eng::control::place_balance_step(
+          b.settings.placement, com.head<2>(), vcom, omega, s.from, sole[1 - s.foot], stance_hull, b.stance.heading,
+          &b.ctl.step_lqr, left);
+      eng::control::replan_balance_step(s, land.to, ground, g, b.settings.tuning.step.foothold, t);
+    }
+    if (down || s.elapsed > s.duration + t.late) {
+      s.active = false;
+      st.settled = 0.0;
+    }
+  } else {
+    // The feet's contact hull and how far the capture point is out of it.
+    std::vector<Eigen::Vector2d>& pts = b.scratch.pts;
+    pts.clear();
+    for (int k = 0; k < 2; ++k) pts.insert(pts.end(), corners[k].begin(), corners[k].end());
+    eng::control::convex_hull_2d_in_place(pts, b.scratch.hull);
+    const double out = eng::control::outside_distance(b.scratch.hull, xi);
+    const int k = eng::control::unloaded_foot(vcom, sole);
+    const std::vector<Eigen::Vector2d>& stance_pts = corners[1 - k];
+    if (b.settings.stepping && out > t.trigger_margin && vcom.norm() > t.min_speed && !stance_pts.empty() &&
+        st.steps_in_recovery < t.max_steps) {
+      // PHASE 1, change of support: the unloaded leg steps to where the body can stop.
+      eng::control::convex_hull_2d(stance_pts, stance_hull);
+      const eng::control::StepLanding land = eng::control::place_balance_step(
+          b.settings.placement, com.head<2>(), vcom, omega, sole[k], sole[1 - k], stance_hull, b.stance.heading,
+          &b.ctl.step_lqr, t);
+      eng::control::start_balance_step(s, k, false, sole[k], land.to, yaw[k], land.duration, ground, g,
+                                       b.settings.tuning.step.foothold);
+      ++st.steps_in_recovery;
+      st.recovering = true;
+      ++b.metrics.balance_steps;
+      b.metrics.most_steps_in_recovery = std::max(b.metrics.most_steps_in_recovery, st.steps_in_recovery);
+    } else if (st.recovering) {
+      // PHASE 2 (the QP's com task over the new support) until the com has all but stopped; then PHASE 3: the foot
+      // that moved last steps back to where the stance has it relative to the other (the desired pose's feet).
+      st.settled = vcom.norm() < t.settle_speed && out < 0.0 ? st.settled + dt : 0.0;
+      if (st.settled > t.settle_time) {
+        const int r = s.foot >= 0 ? s.foot : k;
+        pose_fk(desc.skeleton, b.desired.pose, b.scratch.fk_W, b.scratch.fk_P);
+        Eigen::Vector2d want[2];
+        for (int j = 0; j < 2; ++j)
+          want[j] = (b.scratch.fk_P[feet[j]] + b.scratch.fk_W[feet[j]] * g.centre).head<2>();
+        const Eigen::Vector2d to = sole[1 - r] + (want[r] - want[1 - r]);
+        if ((to - sole[r]).norm() > t.return_tolerance && b.settings.stepping) {
+          st.shifting = r;  // first the weight goes over the other foot (below), then the foot steps
+          st.shift_time = 0.0;
+          st.return_to = to;
+        }
+        st.recovering = false;
+        st.steps_in_recovery = 0;
+        st.settled = 0.0;
+      }
+    }
+  }
+  if (st.shifting >= 0 && !s.active) {
+    // The return step's weight shift (a loaded foot lifted at once tipped the body over it): the QP's com target goes
+    // over the other foot (the lift-off gate's `holding`) until the capture point is inside its sole.
+    const int r = st.shifting;
+    st.shift_time += dt;
+    std::vector<Eigen::Vector2d>& other = stance_hull;
+    eng::control::convex_hull_2d(corners[1 - r], other);
+    if (st.shift_time > t.return_shift_max || other.empty() || st.step.active) {
+      st.shifting = -1;
+    } else if (eng::control::outside_distance(other, xi) < -t.return_shift_margin) {
+      pose_fk(desc.skeleton, b.desired.pose, b.scratch.fk_W, b.scratch.fk_P);
+      eng::control::start_balance_step(s, r, true, sole[r], st.return_to, eng::control::heading_of(b.scratch.fk_W[feet[r]]),
+                                       t.return_duration, ground, g, b.settings.tuning.step.foothold);
+      ++b.metrics.return_steps;
+      st.shifting = -1;
+    } else {
+      swing[r] = false;
+      b.ctl.gate[r].holding = true;
+      return;
+    }
+  }
+  if (!s.active) return;
+  // The step overrides the clip's feet: the stepping foot swings to the step's target, the other stays planted.
+  const int k = s.foot;
+  Eigen::Vector3d velocity;
+  const Eigen::Vector3d target = eng::control::balance_step_sole_target(s, t, &velocity);
+  const Eigen::Quaterniond R(Eigen::AngleAxisd(s.yaw, Eigen::Vector3d::UnitZ()));
+  const Eigen::Vector3d sole_offset(g.centre.x(), g.centre.y(), g.heel.z());  // the sole's centre from the ankle
+  eng::control::StepPlan& plan = b.ctl.step[k];
+  plan.active = true;
+  plan.target = target - R * sole_offset;
+  plan.clip_z = plan.target.z();
+  plan.has_velocity = true;
+  plan.velocity = velocity;
+  b.ctl.step[1 - k].active = false;
+  swing[k] = true;
+  swing[1 - k] = false;
+  for (eng::control::LiftGate& gate : b.ctl.gate) gate = {};
 }
 
 }  // namespace boxing

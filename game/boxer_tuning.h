@@ -49,6 +49,7 @@ struct BoxerTuning {
   eng::control::FootContactThresholds contact;
   eng::control::StepTuning step;
   eng::control::LiftOffGateTuning gate;
+  eng::control::BalanceStepTuning balance_step;
   StanceTuning stance;
   PersonSpaceTuning person;
   PdBalanceTuning pd;

@@ -87,6 +87,12 @@ flags:
                          QP plans (the root assist); with pd: a spring on the pelvis tilt. auto (default): on for
                          graph-walk and match (the paper's boxers), off for stand / push (the balance lab)
   --root-spring-max NM   its torque limit in N m (default 400 with qp, 120 with pd)
+  --stepping on|off|auto balance QP: steps when a push carries the capture point out of the feet (off: in place);
+                         auto (default): on for stand / push, off for graph-walk / match
+  --step-placement capture|ipc
+                         where a balance step lands: past the capture point (default) or where Kwon & Hodgins'
+                         cart-pole LQR comes to rest
+  --flat                 a level platform (every crate 0.30 m) instead of the uneven crates
   --contact-gap M        one foot-contact gap for every purpose (experiment; default: 2 cm support, 2 mm load,
                          5 mm fallen, docs/decisions/foot-contact-thresholds.md)
 graph flags:
@@ -256,6 +262,18 @@ eng::Result<Options> parse_cli(const std::vector<std::string>& args) {
       if (*v != "on" && *v != "off" && *v != "auto")
         return bad("--root-spring must be on, off or auto, got '" + *v + "'");
       o.root_spring = *v;
+    } else if (flag == "--stepping") {
+      auto v = value();
+      if (!v) return missing();
+      if (*v != "on" && *v != "off" && *v != "auto") return bad("--stepping must be on, off or auto, got '" + *v + "'");
+      o.stepping = *v;
+    } else if (flag == "--step-placement") {
+      auto v = value();
+      if (!v) return missing();
+      if (*v != "capture" && *v != "ipc") return bad("--step-placement must be capture or ipc, got '" + *v + "'");
+      o.step_placement = *v;
+    } else if (flag == "--flat") {
+      o.flat = true;
     } else if (flag == "--root-spring-max") {
       auto v = value();
       if (!v) return missing();
@@ -280,7 +298,7 @@ eng::Result<Options> parse_cli(const std::vector<std::string>& args) {
     } else {
       return bad("unknown flag '" + a + "'");
     }
-    if (has_inline && (flag == "--headless" || flag == "--help" || flag == "--ghost" || flag == "--overlay" ||
+    if (has_inline && (flag == "--headless" || flag == "--help" || flag == "--ghost" || flag == "--flat" || flag == "--overlay" ||
                        flag == "--no-overlay" || flag == "--no-validation" || flag == "--no-vsync"))
       return bad("flag " + flag + " takes no value");
   }

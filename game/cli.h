@@ -50,6 +50,10 @@ struct Options {
   // Balance: "qp" = the balance QP (engine/control/balance/balance_qp.h) turns the desired pose into joint torques;
   // "pd" = eq. 3 as implicit joint springs plus the PD shift of the desired root (boxer.cpp's balance layer).
   std::string balance = "qp";
+  std::string stepping = "auto";      // --stepping on|off|auto: the balance's own steps (off = in place, Kudoh's
+                                      // lab); auto = on in the balance lab (stand, push), off in graph-walk and match
+  std::string step_placement = "capture";  // --step-placement capture|ipc: capture point or Kwon's cart-pole LQR
+  bool flat = false;                  // --flat: one level platform (the papers' floor) instead of the uneven crates
   double contact_gap = -1.0;          // m, < 0: each foot-contact purpose its own gap (FootContactThresholds)
   double root_spring_max = -1.0;      // N m, its torque limit; < 0: 400 with the QP, 120 with pd
   // match

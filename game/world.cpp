@@ -148,6 +148,10 @@ void configure_boxer_control(World& w, Boxer& b) {
   setup_implicit_servo(w, b);
 }
 
+namespace {
+constexpr double kStandingComHeight = 0.95;  // m, the guard's com over the soles (Kwon's pendulum length)
+}  // namespace
+
 void add_boxer(World& w, int index, const Eigen::Vector3f& color, bool limp, const Stance& stance) {
   Boxer b;
   b.index = index;
@@ -164,12 +168,22 @@ void add_boxer(World& w, int index, const Eigen::Vector3f& color, bool limp, con
   b.bodies = add_character(w.model, w.boxer_desc, "b" + std::to_string(index) + "_", group, 0xffffffffu, false);
   b.settings.space = servo_space_from_name(w.options.servo);
   b.settings.balance_qp = w.options.balance == "qp";
+  // Balance steps: on in the balance lab; auto leaves the walk and the match as they were measured (their clips' own
+  // steps and the root assist) until the steps are measured there (docs/decisions/balance-steps.md).
+  b.settings.stepping = w.options.stepping == "on" || (w.options.stepping == "auto" && !scenario_hooks(w.options.scenario_id).walks_graph);
+  b.settings.placement = w.options.step_placement == "ipc" ? eng::control::StepPlacement::InvertedPendulumLqr
+                                                           : eng::control::StepPlacement::CapturePoint;
   b.settings.gains.omega_n = w.options.servo_omega_n;
   b.settings.gains.zeta = w.options.servo_zeta;
   b.settings.gains.stable_pd = true;
   b.settings.gains.dt = kPhysicsDt;
   b.control_body = control_body_of(w.boxer_desc);
   b.ctl.servo.resize(w.boxer_desc.skeleton.size());
+  if (b.settings.placement == eng::control::StepPlacement::InvertedPendulumLqr) {
+    // Kwon & Hodgins' pendulum: the com's standing height over the soles, the feet and shanks as the cart.
+    const double m = b.control_body.total_mass, cart = b.settings.tuning.balance_step.cart_mass_fraction * m;
+    b.ctl.step_lqr = eng::control::solve_cart_pole_lqr(kStandingComHeight, m - cart, cart);
+  }
   // The root spring: asked for, or (auto) for the paper's boxers, the graph walk and the match.
   const bool boxers = scenario_hooks(w.options.scenario_id).walks_graph;
   b.settings.root_params.enabled = !limp && (w.options.root_spring == "on" || (w.options.root_spring == "auto" && boxers));
@@ -216,7 +230,7 @@ eng::Result<std::unique_ptr<World>> make_world(const Options& o) {
     return eng::make_error("boxing: --clip '" + o.drill_clip + "' is not a clip in " + dir +
                            "/clips/boxing_clips.gltf (see `build/boxing graph --report g.json` for the names)");
 
-  w->arena = make_arena(o.seed, 0.10, o.scenario_id == Scenario::Match ? kFightSeparation : kBoxerSeparation);
+  w->arena = make_arena(o.seed, 0.10, o.scenario_id == Scenario::Match ? kFightSeparation : kBoxerSeparation, o.flat);
   w->model.dt = kPhysicsDt;
   add_static_arena(*w);
 
@@ -318,6 +332,9 @@ nlohmann::json world_report(const World& w) {
                       {"fell_at_s", m.fell_at},
                       {"steps_taken", m.steps_taken},
                       {"steps_skipped", m.steps_skipped},
+                      {"balance_steps", m.balance_steps},
+                      {"return_steps", m.return_steps},
+                      {"most_steps_in_recovery", m.most_steps_in_recovery},
                       {"fell_pelvis_m", {m.fell_pelvis.x(), m.fell_pelvis.y(), m.fell_pelvis.z()}},
                       {"fell_reason", m.fell_reason},
                       {"time_upright_s", m.time_upright},

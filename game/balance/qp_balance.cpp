@@ -217,11 +217,19 @@ void actuate(QpBalance& q, BalanceTick& tick) {
       const Eigen::Vector3d ff_point(swing_target.x(), swing_target.y(), step.active ? step.clip_z : swing_target.z());
       Eigen::Vector3d v_ff = Eigen::Vector3d::Zero();
       if (!loaded[k] && q.swing_prev[k]) v_ff = (ff_point - q.swing_target_prev[k]) / dt;
-      if (v_ff.norm() > tq.max_swing_speed) v_ff *= tq.max_swing_speed / v_ff.norm();
+      // A balance step (balance_step.h) swings faster than the clip's and is tracked more stiffly.
+      const bool quick = b.ctl.balance_steps.step.active && b.ctl.balance_steps.step.foot == k;
+      if (quick && step.has_velocity) v_ff = step.velocity;  // the path's own rate (no re-plan jumps)
+      const double max_v = quick ? tq.balance_step_speed : tq.max_swing_speed;
+      if (v_ff.norm() > max_v) v_ff *= max_v / v_ff.norm();
       q.swing_target_prev[k] = ff_point;
-      t.acc = kp * (target - t.point) + kd * ((loaded[k] ? Eigen::Vector3d::Zero() : v_ff) - v);
+      const double sw = quick ? tq.balance_step_omega : wn, skp = sw * sw, skd = 2.0 * sw;
+      t.acc = (quick ? skp : kp) * (target - t.point) + (quick ? skd : kd) * ((loaded[k] ? Eigen::Vector3d::Zero() : v_ff) - v);
       t.weight = tq.swing_weight * desc.bones[feet[k]].mass;
       in.points.push_back(t);
+      // A stepping foot is kept level as strongly as a planted one: weakly held (its servo inertia), the leg lifted
+      // the ankle while the toe stayed on the crate, the foot pitched 10-40 deg toe-down and dragged.
+      if (step.active) in.angular[feet[k]].weight = tq.planted_foot_weight;
     }
   }
   for (int k = 0; k < 2; ++k) q.swing_prev[k] = !loaded[k] && !touching[k];

@@ -1,5 +1,7 @@
-// push: the two boxers on their stances; boxer 0 is pushed at the chest (--push-force N for --push-duration s from
-// --push-at s, direction --push-dir in its heading frame, 0 = where it faces).
+// push: the push-recovery lab (Yin & van de Panne's protocol, Kudoh's experiments): boxer 0 alone on its stance,
+// pushed at the chest (--push-force N for --push-duration s from --push-at s, direction --push-dir in its heading
+// frame, 0 = where it faces: a push from behind). Alone: a recovery's steps have the platform to themselves (with
+// the second boxer on its stance a push from behind stepped boxer 0 into it).
 #include <cmath>
 
 #include "engine/physics/step.h"
@@ -33,7 +35,7 @@ void push_report(const World& w, nlohmann::json& r) {
 
 const ScenarioHooks kPushScenario = {
     .walks_graph = false,
-    .setup = [](World& w, Rng&) { setup_boxers_on_stances(w, 2); },
+    .setup = [](World& w, Rng&) { setup_boxers_on_stances(w, 1); },
     .place = place_boxers_on_stances,
     .before_step = push_before_step,
     .report = push_report,

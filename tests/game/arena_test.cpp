@@ -32,3 +32,9 @@ TEST(Arena, TopAtIsTheHighestCrateUnderThePointAndZeroOffThePlatform) {
   const Crate& c = a.crates.front();
   EXPECT_GE(a.top_at(c.center.x(), c.center.y()), c.center.z() + c.half_extents.z() - 1e-12);
 }
+
+TEST(Arena, FlatIsOneLevelPlatform) {
+  const boxing::Arena a = boxing::make_arena(5, 0.10, 1.20, true);
+  for (const auto& c : a.crates) EXPECT_NEAR(c.center.z() + c.half_extents.z(), 0.30, 1e-12);
+  for (const auto& s : a.stances) EXPECT_NEAR(s.lead_top - s.rear_top, 0.0, 1e-12);
+}

@@ -118,3 +118,26 @@ TEST(Cli, ContactGapIsOffByDefaultAndParsedInMetres) {
   ASSERT_FALSE(bad.ok());
   EXPECT_NE(bad.error().find("--contact-gap"), std::string::npos);
 }
+
+namespace {
+TEST(Cli, SteppingPlacementAndFlatParseAndRejectBadValues) {
+  auto d = boxing::parse_cli({});
+  ASSERT_TRUE(d.ok());
+  EXPECT_EQ(d->stepping, "auto");
+  EXPECT_EQ(d->step_placement, "capture");
+  EXPECT_FALSE(d->flat);
+  auto o = boxing::parse_cli({"--stepping", "off", "--step-placement", "ipc", "--flat"});
+  ASSERT_TRUE(o.ok()) << o.error();
+  EXPECT_EQ(o->stepping, "off");
+  EXPECT_EQ(o->step_placement, "ipc");
+  EXPECT_TRUE(o->flat);
+  auto bad = boxing::parse_cli({"--stepping", "sometimes"});
+  ASSERT_FALSE(bad.ok());
+  EXPECT_NE(bad.error().find("--stepping must be on, off or auto"), std::string::npos) << bad.error();
+  bad = boxing::parse_cli({"--step-placement", "lqr"});
+  ASSERT_FALSE(bad.ok());
+  EXPECT_NE(bad.error().find("--step-placement must be capture or ipc"), std::string::npos) << bad.error();
+  EXPECT_FALSE(boxing::parse_cli({"--flat=1"}).ok());
+  EXPECT_NE(boxing::help_text().find("--stepping"), std::string::npos);
+}
+}  // namespace

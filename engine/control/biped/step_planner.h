@@ -51,6 +51,8 @@ struct StepPlan {
   Eigen::Vector3d target = Eigen::Vector3d::Zero();
   double clip_z = 0.0;
   bool step_up = false;  // the landing top is higher than the one the foot leaves (no shuffle, it lifts over)
+  bool has_velocity = false;  // a balance step (balance_step.h): the target's velocity, from its path (world, m/s)
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
 };
 
 // Starts a step: ankle_placed = the placed desired pose's ankle now (world), heading = the placement's heading (rad),

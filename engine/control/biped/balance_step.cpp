@@ -1,0 +1,202 @@
+#include "engine/control/biped/balance_step.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <Eigen/Dense>
+#include <Eigen/Geometry>
+
+#include "engine/control/biped/support_polygon.h"
+
+namespace eng::control {
+
+double lip_omega(double com_height, double g) { return std::sqrt(g / std::max(0.3, com_height)); }
+
+Eigen::Vector2d capture_point_after(const Eigen::Vector2d& xi, const Eigen::Vector2d& p, double omega, double t) {
+  return p + (xi - p) * std::exp(omega * t);
+}
+
+double outside_distance(const std::vector<Eigen::Vector2d>& hull, const Eigen::Vector2d& x) {
+  if (hull.empty()) return std::numeric_limits<double>::infinity();
+  if (hull.size() < 3) return (clamp_to_polygon(hull, x, 0.0) - x).norm();
+  // Counter-clockwise: inside is to the left of every edge. Outside: the distance to the nearest point of the
+  // polygon; inside: minus the distance to the nearest edge.
+  double worst = -std::numeric_limits<double>::infinity();
+  for (size_t i = 0; i < hull.size(); ++i) {
+    const Eigen::Vector2d a = hull[i], e = hull[(i + 1) % hull.size()] - a;
+    const double len = e.norm();
+    if (len < 1e-12) continue;
+    worst = std::max(worst, (e.x() * (x.y() - a.y()) - e.y() * (x.x() - a.x())) / -len);
+  }
+  if (worst <= 0.0) return worst;
+  return (clamp_to_polygon(hull, x, 0.0) - x).norm();
+}
+
+int unloaded_foot(const Eigen::Vector2d& vcom, const Eigen::Vector2d sole[2]) {
+  return vcom.dot(sole[1] - sole[0]) > 0.0 ? 0 : 1;
+}
+
+CartPoleLqr solve_cart_pole_lqr(double l, double body_mass, double cart_mass, double q) {
+  // Linearised about upright (theta from vertical, com = x + l theta; Lagrange's equations):
+  //   M x'' = u - m g theta,   l theta'' = g theta (M + m) / M - u / M.
+  // Discrete Riccati iteration on the Euler-discretised system (dt 2 ms) until the gain settles: the continuous
+  // LQR's gain to within the discretisation.
+  const double g = 9.81, M = cart_mass, m = body_mass, dt = 0.002;
+  Eigen::Matrix4d A = Eigen::Matrix4d::Zero();
+  A(0, 2) = 1.0;
+  A(1, 3) = 1.0;
+  A(2, 1) = -m * g / M;
+  A(3, 1) = g * (M + m) / (M * l);
+  Eigen::Vector4d B(0.0, 0.0, 1.0 / M, -1.0 / (M * l));
+  const Eigen::Matrix4d Ad = Eigen::Matrix4d::Identity() + A * dt;
+  const Eigen::Vector4d Bd = B * dt;
+  const Eigen::Vector4d qdiag(0.0, q, q, 0.0);
+  const Eigen::Matrix4d Q = Eigen::Matrix4d(qdiag.asDiagonal()) * dt;
+  const double R = 1.0 * dt;
+  Eigen::Matrix4d P = Q;
+  Eigen::Matrix<double, 1, 4> K = Eigen::Matrix<double, 1, 4>::Zero();
+  for (int it = 0; it < 200000; ++it) {
+    const double s = R + Bd.dot(P * Bd);
+    const Eigen::Matrix<double, 1, 4> Kn = (Bd.transpose() * P * Ad) / s;
+    P = Q + Ad.transpose() * P * Ad - Ad.transpose() * P * Bd * Kn;
+    const bool done = (Kn - K).norm() < 1e-9 * (1.0 + Kn.norm());
+    K = Kn;
+    if (done && it > 10) break;
+  }
+  return CartPoleLqr{l, body_mass, cart_mass, K};
+}
+
+double cart_rest_offset(const CartPoleLqr& lqr, double offset, double v, double horizon) {
+  // The cart starts at rest under the support (x = 0), the com `offset` ahead of it moving at v:
+  // theta = offset / l, theta' = v / l. Closed loop u = -K s, integrated (semi-implicit Euler, 1 ms).
+  const double g = 9.81, M = lqr.cart_mass, m = lqr.body_mass, l = lqr.l, dt = 0.001;
+  Eigen::Vector4d s(0.0, offset / l, 0.0, v / l);
+  for (double t = 0.0; t < horizon; t += dt) {
+    const double u = -lqr.K.dot(s);
+    const double xdd = (u - m * g * s[1]) / M;
+    const double thdd = (g * s[1] * (M + m) / M - u / M) / l;
+    s[2] += xdd * dt;
+    s[3] += thdd * dt;
+    s[0] += s[2] * dt;
+    s[1] += s[3] * dt;
+  }
+  return s[0] - offset;
+}
+
+StepLanding place_balance_step(StepPlacement how, const Eigen::Vector2d& com, const Eigen::Vector2d& vcom, double omega,
+                               const Eigen::Vector2d& from, const Eigen::Vector2d& stance,
+                               const std::vector<Eigen::Vector2d>& stance_hull, double heading,
+                               const CartPoleLqr* lqr, const BalanceStepTuning& t) {
+  // The stance foot's centre of pressure at the hull's point nearest the capture point (the ankle pushes the
+  // body back as hard as the sole allows) while the other foot swings.
+  const Eigen::Vector2d xi = com + vcom / omega;
+  const Eigen::Vector2d p = stance_hull.empty() ? stance : clamp_to_polygon(stance_hull, xi, 0.0);
+  StepLanding out;
+  double T = t.min_duration;
+  for (int it = 0; it < 4; ++it) {  // the landing depends on the swing's length, the swing's length on the landing
+    out.duration = T;
+    Eigen::Vector2d land;
+    if (how == StepPlacement::CapturePoint || lqr == nullptr) {
+      land = capture_point_after(xi, p, omega, out.duration);
+    } else {
+      // Kwon & Hodgins: the com's state at touch-down (the LIP over p), then where the cart (the new support) comes
+      // to rest under the LQR, per axis; the foot goes there.
+      const double e = std::exp(omega * out.duration), c = 0.5 * (e + 1.0 / e), sh = 0.5 * (e - 1.0 / e);
+      const Eigen::Vector2d x0 = com - p;
+      const Eigen::Vector2d xT = p + x0 * c + vcom * (sh / omega);
+      const Eigen::Vector2d vT = x0 * (omega * sh) + vcom * c;
+      land = xT;
+      for (int a = 0; a < 2; ++a) land[a] += cart_rest_offset(*lqr, 0.0, vT[a]);
+    }
+    const Eigen::Vector2d dir = land - p;
+    if (dir.norm() > 1e-6) land += t.land_margin * dir.normalized();
+    // Within the leg's reach before the next round's swing time (a huge push's landing otherwise ran off to infinity
+    // through e^{omega T}).
+    if ((land - stance).norm() > t.max_reach) land = stance + (land - stance) * (t.max_reach / (land - stance).norm());
+    out.to = land;
+    T = std::max(t.min_duration, (out.to - from).norm() / t.swing_speed);
+  }
+  // Within the leg's reach of the stance foot, not on it, and not across it: a landing on the stance foot's other
+  // side (a cross-over) keeps ahead of or behind it by cross_gap, on the side the foot came from.
+  const Eigen::Vector2d fwd(std::cos(heading), std::sin(heading)), left(-fwd.y(), fwd.x());
+  Eigen::Vector2d d = out.to - stance;
+  if (d.norm() > t.max_reach) d *= t.max_reach / d.norm();
+  const double side = left.dot(from - stance) >= 0.0 ? 1.0 : -1.0;
+  if (side * left.dot(d) < 0.5 * t.min_gap) {
+    const double along = fwd.dot(d), sign = fwd.dot(from - stance) >= 0.0 ? 1.0 : -1.0;
+    if (sign * along < t.cross_gap) d += (sign * t.cross_gap - along) * fwd;
+  }
+  if (d.norm() < t.min_gap) d = (d.norm() > 1e-6 ? d.normalized() : Eigen::Vector2d(side * left)) * t.min_gap;
+  out.to = stance + d;
+  return out;
+}
+
+namespace {
+// The landing moved onto a foothold (the smallest shift that puts the sole's core flat on one top; foothold.h
+// works on the ankle), its top and the highest top the sole passes over on the way (its ends and middle along the
+// straight path).
+void land_on_foothold(BalanceStep& s, const Eigen::Vector2d& to, GroundHeight ground, const FootGeometry& g,
+                      const FootholdParams& fp) {
+  const Eigen::Rotation2Dd R(s.yaw);
+  const Foothold fh = find_foothold(ground, to - R * g.centre.head<2>(), s.yaw, s.yaw, fp);
+  s.asked = to;
+  s.to = to + fh.shift;
+  s.to_top = ground(s.to.x(), s.to.y());
+  const Eigen::Vector2d half = R * Eigen::Vector2d(0.5 * (g.toe.x() - g.heel.x()), 0.0);
+  s.path_top = std::max(s.from_top, s.to_top);
+  for (int i = 0; i <= 10; ++i) {
+    const Eigen::Vector2d c = s.from + (s.to - s.from) * (i / 10.0);
+    for (const Eigen::Vector2d& q : {Eigen::Vector2d(c), Eigen::Vector2d(c + half), Eigen::Vector2d(c - half)})
+      s.path_top = std::max(s.path_top, ground(q.x(), q.y()));
+  }
+}
+}  // namespace
+
+void start_balance_step(BalanceStep& s, int foot, bool returning, const Eigen::Vector2d& from, const Eigen::Vector2d& to,
+                        double yaw, double duration, GroundHeight ground, const FootGeometry& g,
+                        const FootholdParams& fp) {
+  s.active = true;
+  s.returning = returning;
+  s.foot = foot;
+  s.from = from;
+  s.yaw = yaw;
+  s.duration = duration;
+  s.elapsed = 0.0;
+  s.from_top = ground(from.x(), from.y());
+  land_on_foothold(s, to, ground, g, fp);
+}
+
+void replan_balance_step(BalanceStep& s, const Eigen::Vector2d& to, GroundHeight ground, const FootGeometry& g,
+                         const FootholdParams& fp, const BalanceStepTuning& t) {
+  if ((to - s.asked).norm() >= t.replan_move) land_on_foothold(s, to, ground, g, fp);
+}
+
+Eigen::Vector3d balance_step_sole_target(const BalanceStep& s, const BalanceStepTuning& t, Eigen::Vector3d* velocity) {
+  const double T = std::max(s.duration, 1e-6), u = std::clamp(s.elapsed / T, 0.0, 1.0);
+  auto ease = [](double a, double b, double x) {  // C1 ease from 0 at x = a to 1 at x = b
+    const double v = std::clamp((x - a) / (b - a), 0.0, 1.0);
+    return v * v * (3.0 - 2.0 * v);
+  };
+  auto ease_rate = [](double a, double b, double x) {  // its derivative in x
+    const double v = (x - a) / (b - a);
+    return v <= 0.0 || v >= 1.0 ? 0.0 : 6.0 * v * (1.0 - v) / (b - a);
+  };
+  // Lift first, travel, set down: the sole clears the path's highest top before it moves over it.
+  const Eigen::Vector2d xy = s.from + (s.to - s.from) * ease(0.1, 0.85, u);
+  const double clear = s.path_top + t.lift;
+  const bool rising = u < 0.5;
+  const double z = rising ? s.from_top + (clear - s.from_top) * ease(0.0, 0.3, u)
+                          : clear + (s.to_top - t.press - clear) * ease(0.7, 1.0, u);
+  if (velocity) {
+    const bool moving = s.elapsed < T;
+    const Eigen::Vector2d vxy = moving ? Eigen::Vector2d((s.to - s.from) * ease_rate(0.1, 0.85, u) / T) : Eigen::Vector2d::Zero();
+    const double vz = !moving ? 0.0
+                      : rising ? (clear - s.from_top) * ease_rate(0.0, 0.3, u) / T
+                               : (s.to_top - t.press - clear) * ease_rate(0.7, 1.0, u) / T;
+    *velocity = Eigen::Vector3d(vxy.x(), vxy.y(), vz);
+  }
+  return Eigen::Vector3d(xy.x(), xy.y(), z);
+}
+
+}  // namespace eng::control

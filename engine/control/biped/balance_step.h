@@ -1,0 +1,129 @@
+#pragma once
+// BALANCE STEPS: a step the balance takes on its own (not the clip's), when a push carries the capture point out of
+// what the feet can hold. Yin & van de Panne 2006 (sec. IV) split a stepping recovery in three phases; here:
+//   1. change of support: the leg the push unloads steps (Yin: "people step using the leg which is unloaded by the
+//      push", the sign of v_com . load line), at once (no weight shift: that leg carries little already), to where the
+//      body can stop: the capture point (Pratt et al. 2006) predicted at touch-down plus a margin (CapturePoint), or
+//      where Kwon & Hodgins' inverted pendulum on a cart comes to rest under LQR (InvertedPendulumLqr); onto a flat
+//      foothold on the crates (foothold.h). Repeated while the capture point stays outside the new support: double and
+//      multi-step recoveries come out of the same rule;
+//   2. reduce momentum: the balance QP's com task over the new, wider support (the caller's);
+//   3. return to the stance: once the com has nearly stopped (Yin's gamma = 0.15 m/s), a slower step puts the foot
+//      that moved back where the stance has it relative to the other foot (the boxer's guard).
+// Pure functions over plain data; the game calls them each control tick (game/boxer_stepping.cpp).
+#include <Eigen/Core>
+#include <vector>
+
+#include "engine/control/biped/foot_geometry.h"
+#include "engine/control/biped/foothold.h"
+#include "engine/control/biped/ground.h"
+
+namespace eng::control {
+
+enum class StepPlacement { CapturePoint, InvertedPendulumLqr };
+
+struct BalanceStepTuning {
+  double trigger_margin = 0.02;  // m, the capture point this far outside the feet's soles' hull starts a step ...
+  double min_speed = 0.15;       // m/s ... with the com moving at least this fast (a body at rest is not pushed)
+  double land_margin = 0.05;     // m, the landing's sole centre this far beyond the predicted capture point
+  double min_duration = 0.26;    // s, the quickest swing (lift, travel, set down)
+  double swing_speed = 2.2;      // m/s, mean horizontal swing speed: a longer step takes longer
+  double lift = 0.06;            // m, the sole's clearance at mid-swing above the highest top on its way
+  double press = 0.02;           // m, the landing's target this far into the top (it lands, not hovers)
+  double max_reach = 0.75;       // m, sole centre to stance sole centre at most (a long lunge)
+  double min_gap = 0.24;         // m, sole centre to stance sole centre at least (feet do not overlap)
+  double cross_gap = 0.16;       // m, a landing across the stance foot's side keeps this far ahead / behind it
+  double replan_until = 0.4;     // the landing is re-planned every tick from the body's state until this fraction of the swing
+  double replan_move = 0.02;     // m, ... and the foothold searched again when the plan moved this far
+  double late = 0.15;            // s, a swing not touching down this long after its duration is set down anyway
+  double settle_speed = 0.15;    // m/s, com speed under which the return phase may start (Yin's gamma)
+  double settle_time = 0.4;      // s, ... for this long, after the last landing
+  double return_tolerance = 0.10;  // m, a foot this far from its stance place relative to the other returns
+  double return_duration = 0.45;   // s, the return step's swing (unhurried)
+  double return_shift_margin = 0.02;  // m, it lifts once the capture point is this far inside the other sole ...
+  double return_shift_max = 1.0;      // s, ... and is given up when the weight shift takes longer
+  int max_steps = 6;             // balance steps in one recovery (a multi-step stop), then the fall is let happen
+  // InvertedPendulumLqr: Kwon & Hodgins' Q = diag(0, 30000, 30000, 0), R = 1 on (cart x, angle, cart v, angular v).
+  double cart_mass_fraction = 0.15;  // the cart (the support: feet and shanks) as a fraction of the body's mass
+};
+
+// One balance step (or return step) under way. Positions are the sole centre (foot_geometry.h centre at sole height).
+struct BalanceStep {
+  bool active = false;
+  bool returning = false;    // phase 3's step back to the stance
+  int foot = -1;             // the stepping foot (0 or 1)
+  Eigen::Vector2d from = Eigen::Vector2d::Zero(), to = Eigen::Vector2d::Zero();  // sole centre, world x y
+  double yaw = 0.0;          // the foot's heading (kept as it lifted)
+  double from_top = 0.0, to_top = 0.0, path_top = 0.0;  // crate tops: where it lifts, where it lands, highest between
+  double duration = 0.0, elapsed = 0.0;
+  Eigen::Vector2d asked = Eigen::Vector2d::Zero();  // the landing as planned before the foothold's shift
+};
+
+// The recovery's bookkeeping between steps.
+struct BalanceStepState {
+  BalanceStep step;
+  int steps_in_recovery = 0;  // steps since the last time the body stood still
+  double settled = 0.0;       // s the com has been slower than settle_speed with its capture point in the support
+  bool recovering = false;    // a recovery started and has not returned to the stance yet
+  int shifting = -1;          // phase 3: this foot will step back once the weight is over the other (-1: none)
+  double shift_time = 0.0;    // s shifting so far
+  Eigen::Vector2d return_to = Eigen::Vector2d::Zero();  // where it steps back to (sole centre)
+};
+
+// The linear inverted pendulum's natural frequency sqrt(g / z).
+double lip_omega(double com_height, double g = 9.81);
+
+// The capture point after time t with the centre of pressure held at p: xi(t) = p + (xi - p) e^{omega t}
+// (the LIP's divergent component, Pratt et al. 2006 eq. 8).
+Eigen::Vector2d capture_point_after(const Eigen::Vector2d& xi, const Eigen::Vector2d& p, double omega, double t);
+
+// How far the point lies outside the convex polygon (counter-clockwise hull; <= 0 inside: minus the distance to the
+// nearest edge). An empty hull: +infinity.
+double outside_distance(const std::vector<Eigen::Vector2d>& hull, const Eigen::Vector2d& x);
+
+// Yin's rule: the foot the com's motion unloads steps. load_line = foot 1's sole centre - foot 0's; the push moving
+// the com toward foot 1 (v . load_line > 0) unloads foot 0.
+int unloaded_foot(const Eigen::Vector2d& vcom, const Eigen::Vector2d sole[2]);
+
+// Kwon & Hodgins' inverted pendulum on a cart, one axis, linearised about upright: state (cart x, pendulum angle,
+// cart velocity, angular velocity), input the cart force; LQR with Q = diag(0, q, q, 0), R = 1. rest_offset returns
+// where the cart (the support) comes to rest relative to where the com is now, for a com at height l moving at v
+// over a cart under it (angle = offset / l). The gain is solved once per (l, masses) and cached by the caller.
+struct CartPoleLqr {
+  double l = 1.0, body_mass = 75.0, cart_mass = 11.0;
+  Eigen::Matrix<double, 1, 4> K = Eigen::Matrix<double, 1, 4>::Zero();
+};
+CartPoleLqr solve_cart_pole_lqr(double l, double body_mass, double cart_mass, double q = 30000.0);
+// The cart's rest position minus the com's position now, for com - cart = offset and com velocity v (one axis).
+double cart_rest_offset(const CartPoleLqr& lqr, double offset, double v, double horizon = 8.0);
+
+// Where a balance step lands (sole centre, world x y) and how long it swings, for the stepping foot from `from`,
+// the stance foot's sole centre `stance`, its contact hull (the centre of pressure's reach) and the com state.
+struct StepLanding {
+  Eigen::Vector2d to = Eigen::Vector2d::Zero();
+  double duration = 0.0;
+};
+StepLanding place_balance_step(StepPlacement how, const Eigen::Vector2d& com, const Eigen::Vector2d& vcom, double omega,
+                               const Eigen::Vector2d& from, const Eigen::Vector2d& stance,
+                               const std::vector<Eigen::Vector2d>& stance_hull, double heading,
+                               const CartPoleLqr* lqr, const BalanceStepTuning& t);
+
+// Starts a step of `foot` from `from` to `to` (sole centres): the landing moved onto a flat foothold on the crates
+// (the sole's core on the highest top under it), the tops along the way measured.
+void start_balance_step(BalanceStep& s, int foot, bool returning, const Eigen::Vector2d& from, const Eigen::Vector2d& to,
+                        double yaw, double duration, GroundHeight ground, const FootGeometry& g,
+                        const FootholdParams& fp);
+
+// Re-aims a swing under way at a new landing (the body's state moved on: the push still acting, the stance foot's
+// centre of pressure not where the plan put it): the foothold is searched again when it moved replan_move or more.
+void replan_balance_step(BalanceStep& s, const Eigen::Vector2d& to, GroundHeight ground, const FootGeometry& g,
+                         const FootholdParams& fp, const BalanceStepTuning& t);
+
+// The swing's sole-centre target at the step's elapsed time (world): horizontal C1 ease from `from` to `to`, lifted
+// over the path's highest top by `lift` mid-swing, set down `press` into the landing top at the end.
+// Its velocity (the path's derivative at the elapsed time): the swing's feed-forward. (Differenced tick to tick
+// instead, a re-planned landing's jump read as a 4-5 m/s kick and the foot overshot by 40 cm.)
+Eigen::Vector3d balance_step_sole_target(const BalanceStep& s, const BalanceStepTuning& t,
+                                         Eigen::Vector3d* velocity = nullptr);
+
+}  // namespace eng::control

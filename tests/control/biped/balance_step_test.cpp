@@ -1,0 +1,153 @@
+// Balance steps (engine/control/biped/balance_step.h): the linear inverted pendulum's capture point against its
+// closed form, the cart-pole LQR against a simulation of the linearised system, the landing's rules (past the
+// capture point, within reach, not across the stance foot), the foothold on uneven ground and the swing's path.
+#include "engine/control/biped/balance_step.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "engine/control/biped/support_polygon.h"
+
+namespace {
+
+using eng::control::BalanceStepTuning;
+using Eigen::Vector2d;
+
+// A rectangle sole hull (counter-clockwise) centred at c, 0.26 x 0.10 m, facing +x.
+std::vector<Vector2d> sole_at(const Vector2d& c) {
+  std::vector<Vector2d> pts = {c + Vector2d(-0.13, -0.05), c + Vector2d(0.13, -0.05), c + Vector2d(0.13, 0.05),
+                               c + Vector2d(-0.13, 0.05)};
+  std::vector<Vector2d> hull;
+  eng::control::convex_hull_2d(pts, hull);
+  return hull;
+}
+
+TEST(CapturePointAfter, MatchesTheLinearInvertedPendulumsClosedForm) {
+  // x'' = w^2 (x - p): x(t) = p + (x0 - p) cosh(wt) + v0/w sinh(wt); xi(t) = x(t) + x'(t)/w.
+  const double w = eng::control::lip_omega(0.95), t = 0.3;
+  const Vector2d x0(0.1, -0.05), v0(0.6, 0.2), p(0.02, 0.01);
+  const Vector2d x = p + (x0 - p) * std::cosh(w * t) + v0 / w * std::sinh(w * t);
+  const Vector2d v = (x0 - p) * w * std::sinh(w * t) + v0 * std::cosh(w * t);
+  const Vector2d xi = eng::control::capture_point_after(x0 + v0 / w, p, w, t);
+  EXPECT_NEAR((xi - (x + v / w)).norm(), 0.0, 1e-12);
+  EXPECT_NEAR(w, std::sqrt(9.81 / 0.95), 1e-12);
+}
+
+TEST(OutsideDistance, IsSignedDistanceToTheSoleRectangle) {
+  const auto hull = sole_at(Vector2d::Zero());
+  EXPECT_NEAR(eng::control::outside_distance(hull, Vector2d(0.23, 0.0)), 0.10, 1e-12);   // 10 cm past the toe
+  EXPECT_NEAR(eng::control::outside_distance(hull, Vector2d(0.0, 0.0)), -0.05, 1e-12);   // centre: 5 cm from the sides
+  EXPECT_NEAR(eng::control::outside_distance(hull, Vector2d(0.16, 0.09)), 0.05, 1e-12);  // off the corner (3, 4, 5)
+  EXPECT_TRUE(std::isinf(eng::control::outside_distance({}, Vector2d::Zero())));
+}
+
+TEST(UnloadedFoot, IsTheOneTheComMovesAwayFrom) {
+  const Vector2d sole[2] = {Vector2d(0.0, 0.15), Vector2d(0.0, -0.15)};  // left, right
+  EXPECT_EQ(eng::control::unloaded_foot(Vector2d(0.0, 0.5), sole), 1);   // pushed left: the right leg steps
+  EXPECT_EQ(eng::control::unloaded_foot(Vector2d(0.0, -0.5), sole), 0);  // pushed right: the left leg steps
+}
+
+TEST(CartPoleLqr, StabilisesTheLinearisedPendulumAndBringsTheCartUnderTheCom) {
+  const auto lqr = eng::control::solve_cart_pole_lqr(0.95, 64.0, 11.0);
+  // Stabilising: a com 10 cm ahead of the cart, moving on at 0.5 m/s, ends at rest over the cart: the cart's rest
+  // position is ahead of where the com is now (it runs under the falling body).
+  const double ahead = eng::control::cart_rest_offset(lqr, 0.10, 0.5);
+  EXPECT_GT(ahead, 0.0);
+  // Converged: a longer horizon does not move it.
+  EXPECT_NEAR(eng::control::cart_rest_offset(lqr, 0.10, 0.5, 16.0), ahead, 1e-3);
+  // Linear in the state (a linear closed loop): the rest position (offset + this) doubles with the state; mirrored,
+  // mirrored.
+  EXPECT_NEAR(eng::control::cart_rest_offset(lqr, 0.20, 1.0) + 0.20, 2.0 * (ahead + 0.10), 1e-6);
+  EXPECT_NEAR(eng::control::cart_rest_offset(lqr, -0.10, -0.5), -ahead, 1e-9);
+  // Faster com, farther rest.
+  EXPECT_GT(eng::control::cart_rest_offset(lqr, 0.0, 1.0), eng::control::cart_rest_offset(lqr, 0.0, 0.5));
+}
+
+TEST(PlaceBalanceStep, LandsPastTheCapturePointAtTouchDown) {
+  BalanceStepTuning t;
+  const double w = eng::control::lip_omega(0.95);
+  const Vector2d stance(0.0, 0.12), from(-0.1, -0.12), com(0.05, 0.0), v(0.8, 0.0);
+  const auto hull = sole_at(stance);
+  const auto land = eng::control::place_balance_step(eng::control::StepPlacement::CapturePoint, com, v, w, from, stance,
+                                                     hull, 0.0, nullptr, t);
+  // The capture point at touch-down with the centre of pressure at the stance sole's edge nearest to it.
+  const Vector2d xi = com + v / w, p = eng::control::clamp_to_polygon(hull, xi, 0.0);
+  const Vector2d xi_T = eng::control::capture_point_after(xi, p, w, land.duration);
+  EXPECT_GT((land.to - p).norm(), (xi_T - p).norm()) << "lands beyond the capture point (the margin)";
+  EXPECT_NEAR((land.to - xi_T).norm(), t.land_margin, 1e-9);
+  EXPECT_GE(land.duration, t.min_duration);
+}
+
+TEST(PlaceBalanceStep, StaysWithinReachAndOffTheStanceFoot) {
+  BalanceStepTuning t;
+  const double w = eng::control::lip_omega(0.95);
+  const Vector2d stance(0.0, 0.12), from(0.0, -0.12);
+  const auto hull = sole_at(stance);
+  // A huge push: the leg's reach bounds the step.
+  auto land = eng::control::place_balance_step(eng::control::StepPlacement::CapturePoint, Vector2d(0.0, 0.0),
+                                               Vector2d(4.0, 0.0), w, from, stance, hull, 0.0, nullptr, t);
+  EXPECT_NEAR((land.to - stance).norm(), t.max_reach, 1e-9);
+  // Pushed left (toward the stance foot) with the right foot stepping: it crosses over, ahead or behind the stance
+  // foot by cross_gap, never onto it.
+  land = eng::control::place_balance_step(eng::control::StepPlacement::CapturePoint, Vector2d(0.0, 0.05),
+                                          Vector2d(0.0, 0.9), w, from, stance, hull, 0.0, nullptr, t);
+  EXPECT_GE((land.to - stance).norm(), t.min_gap - 1e-9);
+  if (land.to.y() > stance.y() - 0.5 * t.min_gap) EXPECT_GE(std::abs(land.to.x() - stance.x()), t.cross_gap - 1e-9);
+}
+
+TEST(PlaceBalanceStep, InvertedPendulumLqrStepsFartherForAFasterCom) {
+  BalanceStepTuning t;
+  const double w = eng::control::lip_omega(0.95);
+  const auto lqr = eng::control::solve_cart_pole_lqr(0.95, 64.0, 11.0);
+  const Vector2d stance(0.0, 0.12), from(-0.2, -0.12);
+  const auto hull = sole_at(stance);
+  auto at = [&](double v) {
+    return eng::control::place_balance_step(eng::control::StepPlacement::InvertedPendulumLqr, Vector2d(0.0, 0.0),
+                                            Vector2d(v, 0.0), w, from, stance, hull, 0.0, &lqr, t)
+        .to.x();
+  };
+  EXPECT_LT(at(0.4), at(0.8));
+  EXPECT_GT(at(0.4), 0.0);
+}
+
+TEST(StartBalanceStep, LandsFlatOnOneTopAndClearsTheHighestOnTheWay) {
+  // A 0.2 m high block from x = 0.3 to 0.8; the step asked to land with its sole straddling the block's edge.
+  auto terrain = [](double x, double) { return x >= 0.3 && x <= 0.8 ? 0.2 : 0.0; };
+  const auto ground = eng::control::GroundHeight::of(terrain);
+  eng::control::BalanceStep s;
+  eng::control::FootGeometry g;
+  eng::control::FootholdParams fp;
+  BalanceStepTuning t;
+  eng::control::start_balance_step(s, 1, false, Vector2d(0.0, 0.0), Vector2d(0.3, 0.0), 0.0, 0.3, ground, g, fp);
+  EXPECT_TRUE(eng::control::foothold_ok(ground, s.to - g.centre.head<2>(), 0.0, fp)) << "shifted onto one top";
+  EXPECT_NEAR(s.path_top, 0.2, 1e-12);
+  // The path: starts at the sole, clears the block by `lift` mid-swing, ends pressed into the landing top.
+  s.elapsed = 0.0;
+  EXPECT_NEAR(eng::control::balance_step_sole_target(s, t).z(), 0.0, 1e-12);
+  s.elapsed = 0.5 * s.duration;
+  EXPECT_NEAR(eng::control::balance_step_sole_target(s, t).z(), 0.2 + t.lift, 1e-12);
+  s.elapsed = s.duration;
+  const Eigen::Vector3d end = eng::control::balance_step_sole_target(s, t);
+  EXPECT_NEAR((end.head<2>() - s.to).norm(), 0.0, 1e-12);
+  EXPECT_NEAR(end.z(), s.to_top - t.press, 1e-12);
+}
+
+TEST(BalanceStepSoleTarget, VelocityIsThePathsDerivative) {
+  eng::control::BalanceStep s;
+  s.from = Vector2d(0.0, 0.0);
+  s.to = Vector2d(0.4, 0.1);
+  s.from_top = 0.1, s.to_top = 0.15, s.path_top = 0.15, s.duration = 0.3;
+  BalanceStepTuning t;
+  const double h = 1e-6;
+  for (double e : {0.02, 0.06, 0.12, 0.2, 0.25, 0.29}) {
+    s.elapsed = e;
+    Eigen::Vector3d v;
+    const Eigen::Vector3d p0 = eng::control::balance_step_sole_target(s, t, &v);
+    s.elapsed = e + h;
+    const Eigen::Vector3d p1 = eng::control::balance_step_sole_target(s, t);
+    EXPECT_NEAR(((p1 - p0) / h - v).norm(), 0.0, 1e-4) << "at " << e << " s";
+  }
+}
+
+}  // namespace
