@@ -1,6 +1,8 @@
 #include "game/app.h"
 
 #include <GLFW/glfw3.h>
+#include <sys/resource.h>
+#include <time.h>
 
 #include <algorithm>
 #include <chrono>
@@ -25,6 +27,26 @@ namespace fs = std::filesystem;
 using clock_type = std::chrono::steady_clock;
 
 namespace {
+
+// When the program started (static initialisation, before main): the report's start_to_first_frame_s counts from
+// here to the end of the first rendered frame (window: presented; headless: read back).
+const clock_type::time_point kProgramStart = clock_type::now();
+
+// CPU time of the whole process (every thread: lavapipe rasterises on its own LP_NUM_THREADS threads) in ms. The
+// render timings take it around Renderer::render, which waits for the frame headless, so the difference is what
+// the frame cost the CPUs: steadier than wall time on a machine other work shares.
+double process_cpu_ms() {
+  timespec ts{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return double(ts.tv_sec) * 1e3 + double(ts.tv_nsec) * 1e-6;
+}
+
+// Peak resident set size of the process so far, in MiB.
+double max_rss_mb() {
+  rusage ru{};
+  getrusage(RUSAGE_SELF, &ru);
+  return double(ru.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
+}
 
 struct FrameTimes {
   std::vector<double> ms;
@@ -51,8 +73,18 @@ eng::render::RendererConfig renderer_config(const Options& o) {
   return c;
 }
 
+// The frame costs: `simulate` (4 physics ticks), `render` (wall time of fill_frame + render, headless also the read
+// back) and `render_cpu` (the CPU time all threads spent in it, headless only: the window overlaps frames).
+struct RunTimes {
+  FrameTimes sim, render, render_cpu;
+  double first_frame_s = -1.0;  // start_to_first_frame_s; -1 when nothing was rendered
+  void frame_done() {
+    if (first_frame_s < 0.0) first_frame_s = std::chrono::duration<double>(clock_type::now() - kProgramStart).count();
+  }
+};
+
 nlohmann::json base_report(const Options& o, const World& w, long frames, const eng::render::Renderer& r,
-                           const FrameTimes& sim, const FrameTimes& render, bool headless) {
+                           const RunTimes& t, bool headless) {
   nlohmann::json j = world_report(w);
   j["seed"] = o.seed;
   j["seconds"] = w.data.time;
@@ -65,7 +97,10 @@ nlohmann::json base_report(const Options& o, const World& w, long frames, const 
   j["validation"] = {{"active", r.validation_active()},
                      {"errors", r.validation_errors()},
                      {"warnings", r.validation_warnings()}};
-  j["frame_times"] = {{"simulate", sim.summary()}, {"render", render.summary()}};
+  j["frame_times"] = {{"simulate", t.sim.summary()}, {"render", t.render.summary()}};
+  if (headless) j["frame_times"]["render_cpu"] = t.render_cpu.summary();
+  j["start_to_first_frame_s"] = t.first_frame_s;
+  j["max_rss_mb"] = max_rss_mb();
   return j;
 }
 
@@ -118,7 +153,8 @@ eng::Result<HeadlessRun> run_headless(const Options& o) {
   eng::render::FrameDesc f;
   f.camera = camera_preset(o.camera, w);
   f.overlay = o.overlay_given && o.overlay;
-  FrameTimes sim, render;
+  RunTimes times;
+  FrameTimes &sim = times.sim, &render = times.render;
   HeadlessRun out;
   for (long frame = 1; frame <= frames; ++frame) {
     const auto t0 = clock_type::now();
@@ -128,6 +164,7 @@ eng::Result<HeadlessRun> run_headless(const Options& o) {
     const bool every = o.render_every > 0 && frame % o.render_every == 0;
     if (!last && !every) continue;
     const auto t1 = clock_type::now();
+    const double c1 = process_cpu_ms();
     fill_frame(w, view, f);
     if (f.overlay) {  // no input headless: the panel only shows
       eng::ui::UiInput in;
@@ -143,6 +180,8 @@ eng::Result<HeadlessRun> run_headless(const Options& o) {
     auto img = r.read_back();
     if (!img) return eng::make_error("boxing: reading the frame back failed: " + img.error());
     render.ms.push_back(std::chrono::duration<double, std::milli>(clock_type::now() - t1).count());
+    times.render_cpu.ms.push_back(process_cpu_ms() - c1);
+    times.frame_done();
     if (every && !o.frames_dir.empty()) {
       char name[64];
       std::snprintf(name, sizeof name, "frame_%05ld.png", frame);
@@ -150,7 +189,7 @@ eng::Result<HeadlessRun> run_headless(const Options& o) {
     }
     if (last) out.image = std::move(*img);
   }
-  out.report = base_report(o, w, frames, r, sim, render, true);
+  out.report = base_report(o, w, frames, r, times, true);
   out.driver = r.device_name() + " / " + r.driver_info();
   out.validation_errors = r.validation_errors();
   out.validation_active = r.validation_active();
@@ -226,7 +265,8 @@ int run_windowed(const Options& o) {
   panel.slow = o.slow == 2 ? 1 : o.slow == 4 ? 2 : o.slow == 10 ? 3 : 0;
   MouseHands hands;
   bool left_was_down = false;
-  FrameTimes sim, render;
+  RunTimes times;
+  FrameTimes &sim = times.sim, &render = times.render;
   long frames = 0;
   int shots = 0;
   double accumulator = 0.0;
@@ -393,6 +433,7 @@ int run_windowed(const Options& o) {
       return 1;
     }
     render.ms.push_back(std::chrono::duration<double, std::milli>(clock_type::now() - t1).count());
+    times.frame_done();
     if (win.key_pressed(GLFW_KEY_F12) || (!o.screenshot.empty() && win.should_close())) {
       std::string path = o.screenshot;
       if (path.empty() || !win.should_close()) {
@@ -406,7 +447,7 @@ int run_windowed(const Options& o) {
     }
   }
   World& w = *world;
-  if (auto ok = write_report(o.report, base_report(o, w, frames, r, sim, render, false)); !ok) {
+  if (auto ok = write_report(o.report, base_report(o, w, frames, r, times, false)); !ok) {
     std::fprintf(stderr, "%s\n", ok.error().c_str());
     return 1;
   }

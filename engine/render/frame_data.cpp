@@ -36,6 +36,7 @@ FrameUniforms Renderer::Impl::make_uniforms(const FrameDesc& frame) {
   }
   const bool casters = lo.x <= hi.x;
   float texel_world = 0.0f;
+  bool footprint = false;
   if (casters) {
     const glm::vec3 center = 0.5f * (lo + hi);
     const float radius = std::max(0.5f * glm::length(hi - lo), 0.5f) + 0.25f;
@@ -53,7 +54,26 @@ FrameUniforms Renderer::Impl::make_uniforms(const FrameDesc& frame) {
     const glm::mat4 lproj = glm::orthoRH_ZO(-radius, radius, -radius, radius, 0.0f, far_plane);
     u.light_view_proj = lproj * lview;
     texel_world = 2.0f * radius / static_cast<float>(kShadowSize);
+    // The map's footprint on the ground: its square (a little wider) carried along the sun onto z = 0. Only this
+    // part of the ground can be shadowed; ground.frag's shadowed variant draws it, the cheap one the rest. A sun
+    // lower than ~11 degrees stretches it too far: then the whole ground takes the shadowed variant.
+    if (sun_dir.z < -0.2f) {
+      const glm::mat4 inv = glm::inverse(lview);
+      const float e = 1.02f * radius;
+      const glm::vec2 sq[4] = {{-e, -e}, {e, -e}, {e, e}, {-e, e}};
+      glm::vec2 c[4];
+      for (int k = 0; k < 4; ++k) {
+        const glm::vec3 p = glm::vec3(inv * glm::vec4(sq[k], 0.0f, 1.0f));
+        const glm::vec3 q = p + sun_dir * (-p.z / sun_dir.z);
+        c[k] = glm::vec2(q);
+      }
+      u.ground_footprint[0] = glm::vec4(c[0], c[1]);
+      u.ground_footprint[1] = glm::vec4(c[2], c[3]);
+      footprint = true;
+    }
   }
+  ground_shadows = casters;
+  ground_footprint = footprint;
   u.eye = glm::vec4(cam.eye, cam.zfar);
   u.sun_dir = glm::vec4(sun_dir, frame.sun.intensity);
   u.sun_color = glm::vec4(frame.sun.color, 1.0f);
@@ -62,7 +82,7 @@ FrameUniforms Renderer::Impl::make_uniforms(const FrameDesc& frame) {
   u.ground_tint = glm::vec4(0.30f, 0.26f, 0.20f, 1.0f);
   u.fog = glm::vec4(2.2f / std::max(cam.zfar, 1.0f), 0, 0, 0);
   u.viewport = glm::vec4(extent.width, extent.height, 1.0f / extent.width, 1.0f / extent.height);
-  u.shadow = glm::vec4(1.0f / kShadowSize, 1.5f * texel_world, casters ? 1.0f : 0.0f, 0.0f);
+  u.shadow = glm::vec4(1.0f / kShadowSize, 1.5f * texel_world, casters ? 1.0f : 0.0f, footprint ? 1.0f : 0.0f);
   return u;
 }
 

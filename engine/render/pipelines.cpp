@@ -150,6 +150,8 @@ struct PipelineDesc {
   VkPrimitiveTopology topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
   VkCullModeFlags cull = VK_CULL_MODE_NONE;
   bool depth_test = true, depth_write = true, blend = false, depth_bias = false, shadow = false;
+  VkCompareOp depth_compare = VK_COMPARE_OP_LESS_OR_EQUAL;
+  int fragment_variant = -1;  // >= 0: the fragment shader's specialization constant 0 (ground.frag: GroundVariant)
 };
 
 eng::Result<VkPipeline> make_pipeline(const VkContext& ctx, const Pipelines& p, VkSampleCountFlagBits samples,
@@ -168,6 +170,12 @@ eng::Result<VkPipeline> make_pipeline(const VkContext& ctx, const Pipelines& p, 
   VkPipelineShaderStageCreateInfo stages[2]{};
   stages[0] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_VERTEX_BIT, *vs, "main", nullptr};
   stages[1] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_FRAGMENT_BIT, fs, "main", nullptr};
+  // A specialization constant, not a uniform: the driver folds it and drops the branch it rules out (a CPU
+  // rasteriser runs both sides of a uniform branch under a mask, so only a folded branch saves work).
+  const int32_t variant = d.fragment_variant;
+  const VkSpecializationMapEntry entry{0, 0, sizeof(int32_t)};
+  const VkSpecializationInfo spec{1, &entry, sizeof(int32_t), &variant};
+  if (d.fragment_variant >= 0) stages[1].pSpecializationInfo = &spec;
 
   std::vector<VkVertexInputBindingDescription> bindings;
   std::vector<VkVertexInputAttributeDescription> attrs;
@@ -217,7 +225,7 @@ eng::Result<VkPipeline> make_pipeline(const VkContext& ctx, const Pipelines& p, 
   VkPipelineDepthStencilStateCreateInfo ds{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
   ds.depthTestEnable = d.depth_test ? VK_TRUE : VK_FALSE;
   ds.depthWriteEnable = d.depth_write ? VK_TRUE : VK_FALSE;
-  ds.depthCompareOp = VK_COMPARE_OP_LESS_OR_EQUAL;
+  ds.depthCompareOp = d.depth_compare;
   VkPipelineColorBlendAttachmentState cb{};
   cb.colorWriteMask = 0xF;
   if (d.blend) {
@@ -292,9 +300,17 @@ eng::Result<void> create_pipelines(const VkContext& ctx, VkSampleCountFlagBits s
   shadow.input = Input::MeshPositionOnly;
   shadow.depth_bias = true;
   shadow.shadow = true;
+  // The sky is drawn last, at the far plane, only where nothing else drew (depth still cleared to 1).
   PipelineDesc sky{fullscreen_vert, sizeof(fullscreen_vert), sky_frag, sizeof(sky_frag)};
-  sky.depth_test = sky.depth_write = false;
+  sky.depth_write = false;
+  // The ground is drawn after the opaque bodies (depth-tested fragments behind them are never shaded), LESS so
+  // a body touching the ground keeps its pixels as when the ground came first. Two variants (ground.frag): the
+  // shadow map's footprint with shadows, then the rest without.
   PipelineDesc ground{ground_vert, sizeof(ground_vert), ground_frag, sizeof(ground_frag)};
+  ground.depth_compare = VK_COMPARE_OP_LESS;
+  PipelineDesc ground_shadowed = ground;
+  ground_shadowed.fragment_variant = 0;
+  ground.fragment_variant = 1;
   PipelineDesc opaque{mesh_vert, sizeof(mesh_vert), mesh_frag, sizeof(mesh_frag)};
   opaque.input = Input::Mesh;
   opaque.cull = VK_CULL_MODE_BACK_BIT;
@@ -312,7 +328,7 @@ eng::Result<void> create_pipelines(const VkContext& ctx, VkSampleCountFlagBits s
   points.blend = true;
   PipelineDesc lines_on_top = lines, points_on_top = points;
   lines_on_top.depth_test = points_on_top.depth_test = false;
-  const Job jobs[] = {{&p.shadow, shadow}, {&p.sky, sky},     {&p.ground, ground}, {&p.opaque, opaque},
+  const Job jobs[] = {{&p.shadow, shadow}, {&p.sky, sky},     {&p.ground, ground}, {&p.ground_shadowed, ground_shadowed}, {&p.opaque, opaque},
                       {&p.ghost, ghost},   {&p.lines, lines}, {&p.points, points}, {&p.lines_on_top, lines_on_top},
                       {&p.points_on_top, points_on_top}};
   for (const Job& j : jobs) {
@@ -324,7 +340,7 @@ eng::Result<void> create_pipelines(const VkContext& ctx, VkSampleCountFlagBits s
 }
 
 void destroy_pipelines(const VkContext& ctx, Pipelines& p) {
-  for (VkPipeline pipe : {p.shadow, p.sky, p.ground, p.opaque, p.ghost, p.lines, p.points, p.lines_on_top, p.points_on_top})
+  for (VkPipeline pipe : {p.shadow, p.sky, p.ground, p.ground_shadowed, p.opaque, p.ghost, p.lines, p.points, p.lines_on_top, p.points_on_top})
     if (pipe) vkDestroyPipeline(ctx.device, pipe, nullptr);
   if (p.layout) vkDestroyPipelineLayout(ctx.device, p.layout, nullptr);
   if (p.set_layout) vkDestroyDescriptorSetLayout(ctx.device, p.set_layout, nullptr);

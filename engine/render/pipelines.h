@@ -22,7 +22,8 @@ struct Pipelines {
   VkRenderPass overlay_pass = VK_NULL_HANDLE;  // loads the resolved image, draws ImGui, ends in TRANSFER_SRC
   VkDescriptorSetLayout set_layout = VK_NULL_HANDLE;
   VkPipelineLayout layout = VK_NULL_HANDLE;
-  VkPipeline shadow = VK_NULL_HANDLE, sky = VK_NULL_HANDLE, ground = VK_NULL_HANDLE, opaque = VK_NULL_HANDLE,
+  VkPipeline shadow = VK_NULL_HANDLE, sky = VK_NULL_HANDLE, ground = VK_NULL_HANDLE, ground_shadowed = VK_NULL_HANDLE,
+             opaque = VK_NULL_HANDLE,
              ghost = VK_NULL_HANDLE, lines = VK_NULL_HANDLE, points = VK_NULL_HANDLE;
   VkPipeline lines_on_top = VK_NULL_HANDLE, points_on_top = VK_NULL_HANDLE;  // no depth test (FrameDesc::debug_on_top)
 };

@@ -45,7 +45,9 @@ Renderer::Impl::~Impl() {
 }
 
 eng::Result<void> Renderer::Impl::init() {
-  samples = pick_samples(ctx->props, cfg.msaa_samples);
+  int want = cfg.msaa_samples;
+  if (want <= 0) want = ctx->props.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU ? 1 : 4;
+  samples = pick_samples(ctx->props, want);
   if (auto r = create_pipelines(*ctx, samples, pipes); !r) return r;
   if (auto r = overlay.init(*ctx, pipes.overlay_pass, ui); !r) return r;
 

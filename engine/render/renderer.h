@@ -19,7 +19,10 @@ struct RendererConfig {
   int width = 1280, height = 720;  // headless target size; windowed mode follows the framebuffer
   bool validation = true;          // requires VK_LAYER_KHRONOS_validation (package vulkan-validationlayers)
   bool vsync = true;
-  int msaa_samples = 4;            // clamped to what the device supports
+  // 0 = by device: 4 on a GPU, 1 on a CPU rasteriser (lavapipe shades and blends every sample on the CPU: 4x MSAA
+  // more than doubled its frame, docs/decisions/renderer-speed.md). Any other value is clamped to what the device
+  // supports.
+  int msaa_samples = 0;
 };
 
 class Renderer {

@@ -16,7 +16,9 @@ namespace eng::render {
 struct FrameUniforms {
   glm::mat4 view_proj, inv_view_proj, light_view_proj;
   glm::vec4 eye, sun_dir, sun_color, sky_zenith, sky_horizon, ground_tint, fog, viewport, shadow;
+  glm::vec4 ground_footprint[2];  // the shadow map's footprint on z = 0, corners (x, y) in order: xy xy | xy xy
 };
+static_assert(sizeof(FrameUniforms) == 3 * 64 + 11 * 16, "FrameUniforms must match shaders/common.glsl (std140)");
 
 // std430 mirror of InstanceData.
 struct GpuInstance {
@@ -24,6 +26,7 @@ struct GpuInstance {
   glm::vec4 color;
   glm::vec4 params;
 };
+static_assert(sizeof(GpuInstance) == 96, "GpuInstance must match InstanceData in shaders/common.glsl (std430)");
 
 struct GpuMesh {
   Buffer vertices, indices;
@@ -60,6 +63,9 @@ struct Renderer::Impl {
   VkFramebuffer scene_fb = VK_NULL_HANDLE, overlay_fb = VK_NULL_HANDLE;
   Buffer readback;
   bool have_frame = false;
+  // This frame's shadow setup (make_uniforms): casters cast shadows; the ground's shadowed part is the map's
+  // footprint, drawn apart from the rest of the ground.
+  bool ground_shadows = false, ground_footprint = false;
 
   VkDescriptorPool pool = VK_NULL_HANDLE;
   std::vector<PerFrame> frames;  // 2 in flight when windowed; 1 headless (it waits every frame anyway)

@@ -1,5 +1,5 @@
-// Scene pass into the MSAA target (resolved at the end): sky, ground, opaque instances, alpha-blended ghosts
-// (depth test on, depth write off, back to front), then debug lines/points on top.
+// Scene pass into the colour target (multisampled and resolved at the end where MSAA is on): opaque instances,
+// ground, sky, alpha-blended ghosts (depth test on, depth write off, back to front), then debug lines/points.
 #include "engine/render/renderer_impl.h"
 
 namespace eng::render {
@@ -16,17 +16,24 @@ void Renderer::Impl::record_scene_pass(VkCommandBuffer cmd, PerFrame& f, const F
   rp.pClearValues = clears;
   vkCmdBeginRenderPass(cmd, &rp, VK_SUBPASS_CONTENTS_INLINE);
   set_viewport(cmd, extent);
-  // Sky first: a fullscreen triangle that writes no depth, so everything else draws over it.
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes.sky);
-  vkCmdDraw(cmd, 3, 1, 0, 0);
-  if (frame.ground) {
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes.ground);
-    vkCmdDraw(cmd, 6, 1, 0, 0);
-  }
+  // Front to back as far as it goes, so the depth test rejects hidden fragments before they are shaded: opaque
+  // bodies, the ground (its shadowed footprint, then the rest), the sky where nothing drew; then the blended
+  // ghosts and the debug drawing.
   if (!frame.opaque.empty()) {
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes.opaque);
     draw_opaque(cmd, frame);
   }
+  if (frame.ground) {
+    // Instance 1 = the footprint quad, instance 0 = the square around the camera (ground.vert).
+    if (ground_footprint) {
+      vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes.ground_shadowed);
+      vkCmdDraw(cmd, 6, 1, 0, 1);
+    }
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, ground_footprint || !ground_shadows ? pipes.ground : pipes.ground_shadowed);
+    vkCmdDraw(cmd, 6, 1, 0, 0);
+  }
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes.sky);
+  vkCmdDraw(cmd, 3, 1, 0, 0);
   if (!frame.ghosts.empty()) {
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes.ghost);
     const size_t base = frame.opaque.size();
