@@ -51,7 +51,7 @@ struct Options {
   // "pd" = eq. 3 as implicit joint springs plus the PD shift of the desired root (boxer.cpp's balance layer).
   std::string balance = "qp";
   std::string stepping = "auto";      // --stepping on|off|auto: the balance's own steps (off = in place, Kudoh's
-                                      // lab); auto = on in the balance lab (stand, push), off in graph-walk and match
+                                      // lab); auto = on in the push lab, off elsewhere
   std::string step_placement = "capture";  // --step-placement capture|ipc: capture point or Kwon's cart-pole LQR
   bool flat = false;                  // --flat: one level platform (the papers' floor) instead of the uneven crates
   double contact_gap = -1.0;          // m, < 0: each foot-contact purpose its own gap (FootContactThresholds)

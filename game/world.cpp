@@ -168,9 +168,9 @@ void add_boxer(World& w, int index, const Eigen::Vector3f& color, bool limp, con
   b.bodies = add_character(w.model, w.boxer_desc, "b" + std::to_string(index) + "_", group, 0xffffffffu, false);
   b.settings.space = servo_space_from_name(w.options.servo);
   b.settings.balance_qp = w.options.balance == "qp";
-  // Balance steps: on in the balance lab; auto leaves the walk and the match as they were measured (their clips' own
-  // steps and the root assist) until the steps are measured there (docs/decisions/balance-steps.md).
-  b.settings.stepping = w.options.stepping == "on" || (w.options.stepping == "auto" && !scenario_hooks(w.options.scenario_id).walks_graph);
+  // Balance steps: on in the push lab; auto leaves the other scenarios as they were measured (the walk's and the
+  // match's gated clip steps, the stand's drags) until the steps win there (docs/decisions/balance-steps.md).
+  b.settings.stepping = w.options.stepping == "on" || (w.options.stepping == "auto" && w.options.scenario_id == Scenario::Push);
   b.settings.placement = w.options.step_placement == "ipc" ? eng::control::StepPlacement::InvertedPendulumLqr
                                                            : eng::control::StepPlacement::CapturePoint;
   b.settings.gains.omega_n = w.options.servo_omega_n;

@@ -241,6 +241,12 @@ void actuate(QpBalance& q, BalanceTick& tick) {
   // plan mostly tracks the pose. (Standing, walking and fighting: a few ticks a minute, one foot's edge.)
   eng::control::BalanceQpParams& params = q.solve_params;
   params = q.params;
+  // During a balance step's swing the com and momentum tasks are priced lower: held to the stance foot's support they
+  // threw the upper body against the fall the step is there to catch (docs/decisions/balance-steps.md).
+  if (b.ctl.balance_steps.step.active && !b.ctl.balance_steps.step.returning) {
+    params.w_force *= tq.balance_step_com_scale;
+    params.w_moment *= tq.balance_step_com_scale;
+  }
   if (int(in.contacts.size()) < tq.min_support_contacts && !first_tick) {
     params.w_force *= tq.few_contacts_task_scale;
     params.w_moment *= tq.few_contacts_task_scale;

@@ -29,6 +29,7 @@ struct BalanceQpTuning {
   double max_swing_speed = 3.0;       // m/s, the swing foot's feed-forward velocity bound
   double balance_step_omega = 25.0;   // rad/s, a balance step's swing tracked this stiffly (the servo's 15: landed late)
   double balance_step_speed = 4.5;    // m/s, its feed-forward velocity bound
+  double balance_step_com_scale = 0.1;  // the com / momentum tasks' price during its swing (1: fewer pushes survived)
   double max_com_acc = 6.0;           // m/s^2, the desired com acceleration's bound
   double stance_drop = 0.04;          // m, the desired root this much below the clip's (knees bent deeper)
   double joint_torque_limit = 500.0;  // N m per joint (vector norm): a guard, never reached in play
