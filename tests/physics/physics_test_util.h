@@ -99,19 +99,30 @@ inline Model humanoid_on_floor() {
 // Random state: random unit quaternions, angles, velocities, torques, applied forces.
 inline void randomize(const Model& m, Data& d, std::mt19937& rng) {
   std::normal_distribution<double> n(0.0, 1.0);
+  // The components are drawn last to first in statements of their own: the order in which the arguments of one
+  // call are evaluated is unspecified (GCC goes right to left, clang left to right), and the tests must see the
+  // same state from every compiler (the sanitizer build uses clang). Last to first keeps GCC's states.
+  auto quat = [&] {
+    const double z = n(rng), y = n(rng), x = n(rng), w = n(rng);
+    return Quat(w, x, y, z);
+  };
+  auto vec3 = [&] {
+    const double z = n(rng), y = n(rng), x = n(rng);
+    return Vec3(x, y, z);
+  };
   for (size_t i = 1; i < m.bodies.size(); ++i) {
     const Body& b = m.bodies[i];
     double* q = d.q.data() + b.q_index;
     if (b.joint == JointType::Free) {
       for (int k = 0; k < 3; ++k) q[k] = n(rng);
-      quat_store(Quat(n(rng), n(rng), n(rng), n(rng)).normalized(), q + 3);
+      quat_store(quat().normalized(), q + 3);
     } else if (b.joint == JointType::Ball) {
-      quat_store(Quat(n(rng), n(rng), n(rng), n(rng)).normalized(), q);
+      quat_store(quat().normalized(), q);
     } else if (b.joint == JointType::Hinge) {
       q[0] = n(rng);
     }
-    d.applied_force[i] = Vec3(n(rng), n(rng), n(rng));
-    d.applied_torque[i] = Vec3(n(rng), n(rng), n(rng));
+    d.applied_force[i] = vec3();
+    d.applied_torque[i] = vec3();
   }
   for (int k = 0; k < m.nv; ++k) d.v[k] = n(rng);
 }
