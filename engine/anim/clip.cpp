@@ -169,7 +169,11 @@ int find_clip(const std::vector<Clip>& clips, const std::string& name) {
 eng::Result<std::vector<Clip>> load_clips(const std::string& path, const Skeleton& sk) {
   auto scene = eng::assets::load_gltf(path);
   if (!scene) return eng::make_error("load_clips: " + scene.error());
-  const auto& sc = *scene;
+  return load_clips(*scene, sk);
+}
+
+eng::Result<std::vector<Clip>> load_clips(const eng::assets::GltfScene& sc, const Skeleton& sk) {
+  const std::string& path = sc.path;
   auto fail = [&](const std::string& anim, const std::string& msg) {
     return eng::make_error("load_clips: " + path + ": animation '" + anim + "': " + msg);
   };

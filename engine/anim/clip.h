@@ -25,6 +25,10 @@
 #include "engine/anim/skeleton.h"
 #include "engine/core/result.h"
 
+namespace eng::assets {
+struct GltfScene;
+}
+
 namespace eng::anim {
 
 struct Clip {
@@ -58,6 +62,8 @@ Eigen::Vector3d angular_velocity_between(const Eigen::Quaterniond& qa, const Eig
 // extras.loop; glove and impact come together), channels with different key times, no translation on the
 // root bone.
 eng::Result<std::vector<Clip>> load_clips(const std::string& gltf_path, const Skeleton& skeleton);
+// The same from a loaded scene (its path names it in errors).
+eng::Result<std::vector<Clip>> load_clips(const eng::assets::GltfScene& scene, const Skeleton& skeleton);
 
 // Index of the clip with this name, -1 when none.
 int find_clip(const std::vector<Clip>& clips, const std::string& name);

@@ -7,12 +7,17 @@
 
 #include <tiny_gltf.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <exception>
 #include <filesystem>
 #include <fstream>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
+#include <iterator>
+#include <optional>
+#include <string_view>
 
 namespace eng::assets {
 namespace {
@@ -154,6 +159,12 @@ std::vector<float> read_floats(const tinygltf::Model& m, int index, int type, co
   for (size_t i = 0; i < v.count; ++i)
     std::memcpy(&out[i * static_cast<size_t>(v.comps)], v.base + i * v.stride,
                 sizeof(float) * static_cast<size_t>(v.comps));
+  // The binary buffer can hold what JSON cannot; glTF allows finite numbers only (the validator's
+  // ACCESSOR_INVALID_FLOAT), and one NaN key would turn a whole simulated body into NaN.
+  for (size_t i = 0; i < out.size(); ++i)
+    if (!std::isfinite(out[i]))
+      fail(what + " (accessor " + std::to_string(index) + ") element " +
+           std::to_string(i / static_cast<size_t>(v.comps)) + " is NaN or infinite (glTF allows finite numbers only)");
   return out;
 }
 
@@ -389,42 +400,121 @@ glm::mat4 GltfScene::world_matrix(int node) const {
   return world;
 }
 
-eng::Result<GltfScene> load_gltf(const std::string& path) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec))
-    return eng::make_error("cannot open content file '" + path +
-                           "': file not found (run from the repo root or pass the right path)");
-  bool binary = false;
-  {
-    std::ifstream f(path, std::ios::binary);
-    if (!f)
-      return eng::make_error("cannot open content file '" + path + "': cannot read it (check permissions)");
-    char magic[4] = {0, 0, 0, 0};
-    f.read(magic, 4);
-    binary = f.gcount() == 4 && std::memcmp(magic, "glTF", 4) == 0;
-  }
+namespace {
+
+// One tinygltf load (`load` calls the loader's ...FromFile or ...FromMemory) and its conversion; every failure,
+// thrown or returned, becomes one eng::Error naming `name`.
+template <class Load>
+eng::Result<GltfScene> parse_with(const std::string& name, Load&& load) {
   try {
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(&ignore_images, nullptr);
     tinygltf::Model model;
     std::string err, warn;
-    const bool ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
-                           : loader.LoadASCIIFromFile(&model, &err, &warn, path);
-    if (!ok) {
+    if (!load(loader, &model, &err, &warn)) {
       while (!err.empty() && (err.back() == '\n' || err.back() == ' ')) err.pop_back();
       for (char& c : err)
         if (c == '\n') c = ';';
-      return eng::make_error("broken glTF '" + path + "': " + (err.empty() ? "tinygltf could not parse it" : err) +
+      return eng::make_error("broken glTF '" + name + "': " + (err.empty() ? "tinygltf could not parse it" : err) +
                              kFix);
     }
-    return convert(model, path);
+    return convert(model, name);
   } catch (const BrokenGltf& e) {
-    return eng::make_error("broken glTF '" + path + "': " + e.what + kFix);
+    return eng::make_error("broken glTF '" + name + "': " + e.what + kFix);
   } catch (const std::exception& e) {  // nlohmann parse/type errors thrown inside tinygltf
-    return eng::make_error("broken glTF '" + path + "': invalid JSON or structure (" + e.what() + ")" + kFix);
+    return eng::make_error("broken glTF '" + name + "': invalid JSON or structure (" + e.what() + ")" + kFix);
   } catch (...) {
-    return eng::make_error("broken glTF '" + path + "': unknown parse failure" + std::string(kFix));
+    return eng::make_error("broken glTF '" + name + "': unknown parse failure" + std::string(kFix));
   }
+}
+
+// File system callbacks for bytes in memory: no file exists, so an external buffer or image is an error.
+bool no_file_exists(const std::string&, void*) { return false; }
+std::string same_path(const std::string& path, void*) { return path; }
+bool no_file_read(std::vector<unsigned char>*, std::string* err, const std::string& path, void*) {
+  if (err) *err += "external file '" + path + "' is not read when loading from memory\n";
+  return false;
+}
+bool no_file_write(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
+  if (err) *err += "no file is written\n";
+  return false;
+}
+
+}  // namespace
+
+namespace {
+
+// tinygltf turns the parsed JSON into its own values recursively, one call per level: nesting deep enough
+// ("extras": [[[[...) overflows the stack, e.g. 20,000 levels (a 40 kB file) under ASan. The depth is counted before
+// parsing (brackets outside strings); real content nests about 10 levels.
+constexpr int kMaxJsonDepth = 512;
+
+bool json_too_deep(std::string_view json) {
+  int depth = 0;
+  bool in_string = false;
+  for (size_t i = 0; i < json.size(); ++i) {
+    const char c = json[i];
+    if (in_string) {
+      if (c == '\\') ++i;  // the escaped character
+      else if (c == '"') in_string = false;
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == '[' || c == '{') {
+      if (++depth > kMaxJsonDepth) return true;
+    } else if (c == ']' || c == '}') {
+      --depth;
+    }
+  }
+  return false;
+}
+
+// The JSON of a .gltf, or the first chunk of a .glb (its declared length clamped to the bytes there; tinygltf
+// checks the header itself).
+std::string_view json_text(const unsigned char* data, size_t size, bool binary) {
+  const char* text = reinterpret_cast<const char*>(data);
+  if (!binary) return {text, size};
+  if (size < 20) return {};
+  uint32_t length = 0;
+  std::memcpy(&length, data + 12, 4);
+  return {text + 20, std::min<size_t>(length, size - 20)};
+}
+
+// Both entry points end here. base_dir: where external buffers are read from; nullopt: none is read (from memory).
+eng::Result<GltfScene> parse_bytes(const unsigned char* data, size_t size, const std::string& name,
+                                   const std::optional<std::string>& base_dir) {
+  if (size == 0) return eng::make_error("broken glTF '" + name + "': the file is empty" + kFix);
+  if (size > (size_t{1} << 30))  // tinygltf takes an unsigned int size; content is a few MB
+    return eng::make_error("broken glTF '" + name + "': " + std::to_string(size) + " bytes is too large" + kFix);
+  const bool binary = size >= 4 && std::memcmp(data, "glTF", 4) == 0;
+  if (json_too_deep(json_text(data, size, binary)))
+    return eng::make_error("broken glTF '" + name + "': JSON nested deeper than " + std::to_string(kMaxJsonDepth) +
+                           " levels" + kFix);
+  return parse_with(name, [&](tinygltf::TinyGLTF& loader, tinygltf::Model* model, std::string* err, std::string* warn) {
+    if (!base_dir) loader.SetFsCallbacks({&no_file_exists, &same_path, &no_file_read, &no_file_write, nullptr});
+    const std::string dir = base_dir.value_or("");
+    const auto n = static_cast<unsigned int>(size);
+    return binary ? loader.LoadBinaryFromMemory(model, err, warn, data, n, dir)
+                  : loader.LoadASCIIFromString(model, err, warn, reinterpret_cast<const char*>(data), n, dir);
+  });
+}
+
+}  // namespace
+
+eng::Result<GltfScene> load_gltf(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+    return eng::make_error("cannot open content file '" + path +
+                           "': file not found (run from the repo root or pass the right path)");
+  std::ifstream f(path, std::ios::binary);
+  if (!f) return eng::make_error("cannot open content file '" + path + "': cannot read it (check permissions)");
+  const std::string bytes((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  // What tinygltf's Load...FromFile do: read the file, then parse it with external files relative to its folder.
+  return parse_bytes(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), path,
+                     std::filesystem::path(path).parent_path().string());
+}
+
+eng::Result<GltfScene> load_gltf_memory(const unsigned char* data, size_t size, const std::string& name) {
+  return parse_bytes(data, size, name, std::nullopt);
 }
 
 }  // namespace eng::assets

@@ -77,5 +77,9 @@ struct GltfScene {
 };
 
 eng::Result<GltfScene> load_gltf(const std::string& path);  // .gltf (embedded base64 or external .bin) and .glb
+// The same from bytes in memory (a .glb when they start with "glTF", else .gltf JSON); `name` stands for the path
+// in errors and in GltfScene::path. Only embedded data is read (data: URIs, the GLB's BIN chunk): an external
+// buffer is an error, no file is opened. The fuzz harnesses (tests/fuzz/) enter here.
+eng::Result<GltfScene> load_gltf_memory(const unsigned char* data, size_t size, const std::string& name);
 
 }  // namespace eng::assets

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <unistd.h>
@@ -157,6 +158,45 @@ TEST(ClipErrors, MissingMetadata) {
   auto r2 = load_clips(write_json(k, "no_impact.gltf"), boxer_skeleton());
   ASSERT_FALSE(r2.ok());
   EXPECT_NE(r2.error().find("jab"), std::string::npos) << r2.error();
+}
+
+// Found by fuzz_clips (tests/fuzz/): a NaN rotation key in the binary buffer (which JSON cannot hold) loaded as a NaN
+// pose; now the glTF loader refuses it and says where.
+TEST(ClipErrors, NanKeyIsAnErrorNotANanPose) {
+  // A .glb: the root translates over two keys, the chest turns; the chest's key 1 is given as `w`.
+  auto clip_glb = [](float w) {
+    std::string js =
+        R"({"asset":{"version":"2.0"},"nodes":[{"name":"pelvis","children":[1]},{"name":"chest"}],)"
+        R"("buffers":[{"byteLength":64}],"bufferViews":[{"buffer":0,"byteLength":8},)"
+        R"({"buffer":0,"byteOffset":8,"byteLength":24},{"buffer":0,"byteOffset":32,"byteLength":32}],)"
+        R"("accessors":[{"bufferView":0,"componentType":5126,"count":2,"type":"SCALAR","min":[0],"max":[1]},)"
+        R"({"bufferView":1,"componentType":5126,"count":2,"type":"VEC3"},)"
+        R"({"bufferView":2,"componentType":5126,"count":2,"type":"VEC4"}],)"
+        R"("animations":[{"name":"nan_key","extras":{"tags":["guard"],"loop":false},)"
+        R"("channels":[{"sampler":0,"target":{"node":0,"path":"translation"}},)"
+        R"({"sampler":1,"target":{"node":1,"path":"rotation"}}],)"
+        R"("samplers":[{"input":0,"output":1},{"input":0,"output":2}]}]})";
+    while (js.size() % 4) js += ' ';
+    const float bin[16] = {0, 1, 0, 0.9f, 0, 0, 0.9f, 0, 0, 0, 0, 1, 0, 0, 0, w};
+    auto u32 = [](uint32_t v) { return std::string(reinterpret_cast<const char*>(&v), 4); };
+    return "glTF" + u32(2) + u32(12 + 8 + static_cast<uint32_t>(js.size()) + 8 + 64) +
+           u32(static_cast<uint32_t>(js.size())) + "JSON" + js + u32(64) + std::string("BIN\0", 4) +
+           std::string(reinterpret_cast<const char*>(bin), 64);
+  };
+  auto load = [&](float w) -> eng::Result<std::vector<Clip>> {
+    const std::string bytes = clip_glb(w);
+    auto scene = eng::assets::load_gltf_memory(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(),
+                                               "nan_key.glb");
+    if (!scene) return eng::make_error(scene.error());
+    return load_clips(*scene, boxer_skeleton());
+  };
+  auto good = load(1.0f);
+  ASSERT_TRUE(good.ok()) << good.error();
+  EXPECT_EQ(good->at(0).keys.size(), 2u);
+  auto r = load(std::numeric_limits<float>::quiet_NaN());
+  ASSERT_FALSE(r.ok());
+  EXPECT_NE(r.error().find("nan_key.glb"), std::string::npos) << r.error();
+  EXPECT_NE(r.error().find("element 1 is NaN or infinite"), std::string::npos) << r.error();
 }
 
 TEST(ClipErrors, ConverterNamesFileAndLine) {
