@@ -446,7 +446,7 @@ namespace {
 
 // tinygltf turns the parsed JSON into its own values recursively, one call per level: nesting deep enough
 // ("extras": [[[[...) overflows the stack, e.g. 20,000 levels (a 40 kB file) under ASan. The depth is counted before
-// parsing (brackets outside strings); real content nests about 10 levels.
+// parsing (brackets outside strings); the committed content nests 8 deep at most.
 constexpr int kMaxJsonDepth = 512;
 
 bool json_too_deep(std::string_view json) {
