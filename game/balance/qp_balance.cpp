@@ -173,8 +173,8 @@ void actuate(QpBalance& q, BalanceTick& tick) {
 
   // Bone orientation tasks (eq. 3 as accelerations).
   const double wn = b.settings.gains.omega_n * b.ctl.gain_scale, kp = wn * wn, kd = 2.0 * b.settings.gains.zeta * wn;
-  // A punch's striking arm (upper arm, forearm, glove) is driven harder while the punch is aimed (PunchAim::arm_gain:
-  // a boxer's arm snaps, the default servo lags the clip's glove by tens of centimetres at 4-5 m/s).
+  // A punch's striking arm (upper arm, forearm, glove) can be driven harder while the punch is aimed (PunchAim::arm_gain;
+  // 1 in the match since the strike task below carries the glove).
   const PunchAim& aim = b.ctl.aim;
   const int aim_forearm = aim.active && aim.glove > 0 ? skel.parent[aim.glove] : -1;
   const int aim_upper = aim_forearm > 0 ? skel.parent[aim_forearm] : -1;
@@ -187,6 +187,22 @@ void actuate(QpBalance& q, BalanceTick& tick) {
               g * kd * (b.ctl.servo.omega_d[i] - b.scratch.omega_a[i]);
     t.weight = b.control_body.I_eff[i] * (arm ? g * g : 1.0);
     in.angular.push_back(t);
+  }
+  // The punch's strike: the glove's centre driven along a velocity field into the target (PunchAim::strike).
+  if (aim.active && aim.strike > 0.0 && aim.strike_speed > 0.0 && aim_upper > 0) {
+    eng::control::QpPointTask t;
+    t.body = b.bodies.body[aim.glove];
+    const auto& xg = d.x[t.body];
+    t.point = xg.p + xg.R * desc.bones[aim.glove].com;
+    const Eigen::Vector3d v = d.v_body[t.body].tail<3>() + d.v_body[t.body].head<3>().cross(t.point);
+    const Eigen::Vector3d to = aim.target - t.point;
+    const double dist = to.norm();
+    const Eigen::Vector3d v_d = dist > 1e-9 ? Eigen::Vector3d(to / dist * std::min(aim.strike_speed, aim.strike_rate * dist))
+                                            : Eigen::Vector3d::Zero();
+    t.acc = aim.strike_omega * (v_d - v);
+    const double arm_mass = desc.bones[aim.glove].mass + desc.bones[aim_forearm].mass + desc.bones[aim_upper].mass;
+    t.weight = aim.strike * aim.strike_weight * arm_mass;
+    in.points.push_back(t);
   }
   for (int k = 0; k < 2; ++k) {
     const int fb = b.bodies.body[feet[k]];

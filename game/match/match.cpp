@@ -105,8 +105,9 @@ void pass_through_opponent(World& w, int k, bool on) {
 // The referee brings both boxers back to their marks once the downed one is up (a reset, as a fighting game's next
 // exchange: the boxers' steps do not carry them, arena.h, and a fall and get-up leave a boxer up to 0.8 m off its
 // mark, out of reach). Each body is set on its desired pose moved onto its mark, at rest; controllers start over.
-void back_to_marks(World& w) {
+void back_to_marks(World& w, int only = -1) {
   for (Boxer& b : w.boxers) {
+    if (only >= 0 && b.index != only) continue;
     // Facing the opponent again: the walk's fall and get-up clips may have turned its root.
     const double turn = std::remainder(b.stance.heading - eng::control::heading_of(b.desired.pose.rotation[0]), 2.0 * M_PI);
     b.ctl.yaw_offset += turn;
@@ -338,6 +339,12 @@ void referee(World& w) {
         b.ctl.root_spring.set_consciousness(0.6);
         pass_through_opponent(w, k, true);
         boxer_state_enter(s, BoxerState::GettingUp, t, "getting up");
+        // The standing boxer goes to a neutral corner, as a referee sends him (here: to its mark, a reset of that
+        // boxer only): standing over the downed one, the get-up rose into him and stuck crouched (seed 2: counted out).
+        const Boxer& o = w.boxers[1 - k];
+        const Eigen::Vector3d po = w.data.x[o.bodies.body[0]].p, pk = w.data.x[pelvis].p;
+        if (standing_state(o.ctl.state.state) && (po - pk).head<2>().norm() < tu.neutral_corner_within)
+          back_to_marks(w, 1 - k);
       }
     } else if (s.state == BoxerState::GettingUp) {
       g.assist_sq_dt += b.ctl.root_torque.squaredNorm() * dt;
@@ -454,6 +461,14 @@ void match_before_control(World& w) {
       b.ctl.aim.arm_gain = mt.tuning.punch_arm_gain;
       b.ctl.aim.target = xt.p + xt.R * (f.aim_local + kAimThrough * f.aim_dir_local);
       b.ctl.aim.weight = aim_weight(walker->clip_time(), c.impact_time, c.duration());
+      // The strike drives the glove in until its first touch (of anything); from there the arm's momentum and the
+      // bent pose carry it: driven on, the task pushed on into the head (impulses to 60 N s, twice a power punch's).
+      const bool touched = !mt.events[f.open_punch].hit_part.empty();
+      b.ctl.aim.strike = touched ? 0.0 : strike_weight(walker->clip_time(), c.impact_time, mt.tuning.strike_follow);
+      b.ctl.aim.strike_speed = mt.tuning.strike_speed;
+      b.ctl.aim.strike_rate = mt.tuning.strike_rate;
+      b.ctl.aim.strike_omega = mt.tuning.strike_omega;
+      b.ctl.aim.strike_weight = mt.tuning.strike_weight;
     }
     if (f.player) {
       // The player's command, taken when the boxer stands and the walk is free of a plan (a punch asked for during

@@ -34,7 +34,12 @@ inline constexpr double kReplaySeconds = 4.0;
 
 // Measured and chosen in docs/decisions/match-fight.md.
 struct MatchTuning {
-  double punch_arm_gain = 1.8;     // the striking arm's servo frequency x this during an aimed punch (punch_aim.h)
+  double punch_arm_gain = 1.0;     // the striking arm's servo frequency x this during an aimed punch (punch_aim.h)
+  // The strike (PunchAim::strike, docs/decisions/match-fight.md): the glove driven toward the target at up to
+  // strike_speed (0 = off), until its first touch or strike_follow s past the clip's impact frame.
+  double strike_speed = 10.0;      // m/s
+  double strike_follow = 0.03;     // s
+  double strike_rate = 40.0, strike_omega = 40.0, strike_weight = 15.0;  // PunchAim's
   double land_speed = 2.0;         // m/s, a glove's approach speed on head / torso for a punch to count as landed
   double impact_window = 0.05;     // s, the contact impulse summed this long after the first touch
   double head_damage_per_ns = 0.025;  // consciousness lost per N s of impulse on the head
@@ -52,6 +57,7 @@ struct MatchTuning {
   double up_height = 0.8;            // share of the standing pelvis height that counts as up (with guard playing)
   double settle_time = 0.5;          // s up and still before the fight goes on
   double after_count = 0.75;         // consciousness at least this once up from a knockdown
+  double neutral_corner_within = 1.6;  // m, pelvis to pelvis: at a get-up's start a standing opponent this close goes to its mark
   double apart_time = 2.0;           // s both out of reach before the referee brings them back to their marks
 };
 

@@ -24,6 +24,11 @@ double aim_weight(double t, double impact, double duration) {
   return 1.0 - smooth((t - impact) / back);
 }
 
+double strike_weight(double t, double impact, double follow) {
+  if (impact <= 0.0 || t < 0.0 || t > impact + follow) return 0.0;
+  return smooth((t - 0.25 * impact) / (0.35 * impact));
+}
+
 void apply_punch_aim(const eng::assets::CharacterDesc& desc, const PunchAim& aim, eng::anim::Pose& pose,
                      std::vector<Eigen::Quaterniond>& W, std::vector<Eigen::Vector3d>& P) {
   if (!aim.active || aim.weight <= 0.0 || aim.glove <= 0) return;

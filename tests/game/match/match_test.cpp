@@ -3,6 +3,8 @@
 // way it lies, and the same seed gives the same fight.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <functional>
 #include <set>
 
 #include "game/match/body_parts.h"
@@ -13,7 +15,7 @@
 namespace boxing {
 namespace {
 
-std::unique_ptr<World> run_match(uint64_t seed, double seconds) {
+std::unique_ptr<World> run_match(uint64_t seed, double seconds, const std::function<void(MatchTuning&)>& tune = {}) {
   Options o;
   o.headless = true;
   o.scenario_id = Scenario::Match;
@@ -22,6 +24,7 @@ std::unique_ptr<World> run_match(uint64_t seed, double seconds) {
   auto w = make_world(o);
   EXPECT_TRUE(w) << w.error();
   if (!w) return nullptr;
+  if (tune) tune((*w)->match.tuning);
   for (int i = 0; i < static_cast<int>(seconds * 240); ++i) step_world(**w);
   return std::move(*w);
 }
@@ -157,6 +160,41 @@ TEST(PunchAim, WeightRisesToOneAtImpactAndFallsBackOverTheRetraction) {
     last = aim_weight(t, impact, duration);
   }
   EXPECT_EQ(aim_weight(0.1, -1.0, duration), 0.0);  // a clip without an impact frame is not aimed
+}
+
+TEST(PunchAim, StrikeIsOnFromAQuarterOfTheWayToImpactUntilShortlyAfter) {
+  const double impact = 0.14, follow = 0.03;
+  EXPECT_EQ(strike_weight(0.0, impact, follow), 0.0);
+  EXPECT_EQ(strike_weight(0.25 * impact, impact, follow), 0.0);
+  EXPECT_DOUBLE_EQ(strike_weight(0.6 * impact, impact, follow), 1.0);
+  EXPECT_DOUBLE_EQ(strike_weight(impact + follow, impact, follow), 1.0);
+  EXPECT_EQ(strike_weight(impact + follow + 1e-3, impact, follow), 0.0);  // the clip retracts the arm
+  EXPECT_EQ(strike_weight(0.1, -1.0, follow), 0.0);
+}
+
+// The strike task (PunchAim::strike) against the same fight without it: the landed punches' fist speed at contact is
+// in the range of real punches (a jab about 5.6 m/s, Walilko 2005), and the glove's peak speed over every punch thrown
+// (a larger sample than the landed ones) is well above what the bent pose and the stiffer arm alone gave.
+double median_of(const Match& m, bool landed_only, double PunchEvent::*field) {
+  std::vector<double> v;
+  for (const PunchEvent& e : m.events)
+    if ((e.landed || !landed_only) && e.peak_speed > 0.0) v.push_back(e.*field);
+  if (v.empty()) return 0.0;
+  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+  return v[v.size() / 2];
+}
+
+TEST(Match, StrikeTaskBringsTheFistInAtARealPunchsSpeed) {
+  auto on = run_match(1, 60.0);
+  auto off = run_match(1, 60.0, [](MatchTuning& t) { t.strike_speed = 0.0; t.punch_arm_gain = 1.8; });
+  ASSERT_TRUE(on && off);
+  EXPECT_GE(median_of(on->match, true, &PunchEvent::fist_speed), 5.6);
+  const double peak_on = median_of(on->match, false, &PunchEvent::peak_speed);
+  const double peak_off = median_of(off->match, false, &PunchEvent::peak_speed);
+  EXPECT_GT(peak_on, peak_off + 0.5) << peak_on << " vs " << peak_off;
+  int landed = 0;
+  for (const MatchFighter& f : on->match.fighter) landed += f.landed;
+  EXPECT_GE(landed, 8);
 }
 
 TEST(BodyParts, TheBoxersBonesMapToTheirParts) {
