@@ -239,7 +239,9 @@ eng::Result<Options> parse_cli(const std::vector<std::string>& args) {
       if (!v) return missing();
       double x;
       double lo = flag == "--push-dir" ? -3600.0 : 0.0;
-      if (!parse_double(*v, lo, 1e6, x)) return bad(flag + " must be a number, got '" + *v + "'");
+      if (!parse_double(*v, lo, 1e6, x))
+        return bad(flag + (flag == "--push-dir" ? " must be a number from -3600 to 1e6 (degrees)"
+                                                : " must be a number from 0 to 1e6") + ", got '" + *v + "'");
       if (flag == "--push-dir") o.push_dir_deg = x;
       else if (flag == "--push-force") o.push_force = x;
       else if (flag == "--push-duration") o.push_duration = x;

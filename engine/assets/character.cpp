@@ -21,6 +21,17 @@ double widen(float f) {
   return std::strtod(buf, nullptr);
 }
 
+// A number as the user wrote it (shortest form: 1e+30, 11, 0.5).
+std::string number_text(double x) {
+  char buf[32];
+  auto res = std::to_chars(buf, buf + sizeof(buf) - 1, x);
+  *res.ptr = '\0';
+  return buf;
+}
+
+// A bone's offset from its parent beyond this (m) is an error: no character is that large.
+constexpr double kMaxBoneOffset = 10.0;
+
 struct Bad {
   std::string what;
 };
@@ -219,6 +230,13 @@ eng::Result<CharacterDesc> load_character(const GltfScene& scene, const std::str
         throw Bad{"node '" + name + "' has a rest rotation; bones must have identity rest rotation"};
       if (glm::length(n.scale - glm::vec3(1.f)) > 1e-5f)
         throw Bad{"node '" + name + "' has a scale; bones must have unit scale"};
+      // A joint offset beyond any body's size is a unit or export mistake (glTF is in metres): a limb 1e30 m away
+      // loaded and simulated without a word before (scripts/bad-input).
+      const double offset =
+          Eigen::Vector3d(widen(n.translation.x), widen(n.translation.y), widen(n.translation.z)).norm();
+      if (!(offset <= kMaxBoneOffset))
+        throw Bad{"node '" + name + "' sits " + number_text(offset) + " m from its parent; a bone's offset must be " +
+                  "under " + number_text(kMaxBoneOffset) + " m (glTF is in metres)"};
       BonePhysics b = parse_bone(n.extras, name, parent_bone < 0);
       const int bone = d.skeleton.size();
       d.skeleton.name.push_back(name);

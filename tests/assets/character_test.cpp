@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 namespace {
@@ -173,6 +174,16 @@ TEST(Character, MissingRootAndBadFieldsAreErrors) {
   c = load_character(scene);
   ASSERT_FALSE(c.ok());
   EXPECT_NE(c.error().find("inertia"), std::string::npos) << c.error();
+
+  // A joint offset no body has (a unit mistake; found by scripts/bad-input: 1e30 m loaded and simulated).
+  for (const float far : {1e30f, 11.0f, std::numeric_limits<float>::infinity()}) {
+    scene = *s;
+    scene.nodes[static_cast<size_t>(chest)].translation = glm::vec3(far, 0.f, 0.f);
+    c = load_character(scene);
+    ASSERT_FALSE(c.ok()) << far;
+    EXPECT_NE(c.error().find("chest"), std::string::npos) << c.error();
+    EXPECT_NE(c.error().find("metres"), std::string::npos) << c.error();
+  }
 
   // A character can start at a sub-root: the left arm is 3 bones, root joint must then be free.
   c = load_character(*s, "upper_arm_l");
