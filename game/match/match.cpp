@@ -160,7 +160,7 @@ void resolve_landing(World& w, int attacker) {
 // target's height, uppercuts from below. Clearance = the least distance between the approach line and the opponent's
 // gloves and forearms (spheres of their capsules' radii; two along each forearm), ties broken by the seeded AI. A punch
 // can still be blocked: the guard moves while it flies, and a tight guard leaves no opening.
-void choose_opening(World& w, int k, const Clip& c, bool body) {
+double choose_opening(World& w, int k, const Clip& c, bool body) {
   const Boxer& b = w.boxers[k];
   const Boxer& o = w.boxers[1 - k];
   MatchFighter& f = w.match.fighter[k];
@@ -214,6 +214,7 @@ void choose_opening(World& w, int k, const Clip& c, bool body) {
       f.aim_dir_local = xt.R.transpose() * d.normalized();  // the approach, kept in the target's frame
     }
   }
+  return best;
 }
 
 // Punches starting (clip changes) and the AI's view of the other's.
@@ -236,10 +237,18 @@ void track_punches(World& w, const char* started[2]) {
     e.t = w.data.time;
     e.boxer = k;
     e.punch = c.name;
+    // The AI reads the guard: a head the guard covers (no opening wider than switch_to_body_below along the
+    // punch's approach) sends the punch to the body if the body is more open there (the player's aim is kept).
+    const double head_clear = choose_opening(w, k, c, f.ai.aim_body);
+    if (!f.player && !f.ai.aim_body && head_clear < mt.tuning.switch_to_body_below) {
+      const int bone = f.aim_bone;
+      const Eigen::Vector3d local = f.aim_local, dir = f.aim_dir_local;
+      if (choose_opening(w, k, c, true) > head_clear) f.ai.aim_body = true;
+      else f.aim_bone = bone, f.aim_local = local, f.aim_dir_local = dir;
+    }
     e.target = f.ai.aim_body ? "torso" : "head";
     f.open_punch = static_cast<int>(mt.events.size());
     mt.events.push_back(std::move(e));
-    choose_opening(w, k, c, f.ai.aim_body);
     started[k] = c.name.c_str();
   }
 }

@@ -40,6 +40,7 @@ struct MatchTuning {
   double strike_speed = 10.0;      // m/s
   double strike_follow = 0.03;     // s
   double strike_rate = 40.0, strike_omega = 40.0, strike_weight = 15.0;  // PunchAim's
+  double switch_to_body_below = 0.04;  // m: a head opening narrower than this sends an AI's punch to the body if wider there
   double land_speed = 2.0;         // m/s, a glove's approach speed on head / torso for a punch to count as landed
   double impact_window = 0.05;     // s, the contact impulse summed this long after the first touch
   double head_damage_per_ns = 0.025;  // consciousness lost per N s of impulse on the head
