@@ -7,6 +7,7 @@
 
 #include "engine/control/servo/person_space.h"
 #include "engine/control/servo/world_pose.h"
+#include "engine/core/stage_laps.h"
 #include "game/boxer_stepping.h"
 
 namespace boxing {
@@ -191,17 +192,22 @@ double servo_heading(Boxer& b, double dt) {
 }  // namespace
 
 void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const eng::assets::CharacterDesc& desc,
-                   const Arena& arena, Boxer& b, double dt) {
+                   const Arena& arena, Boxer& b, double dt, ControlStageTimes* profile) {
+  eng::core::StageLaps<ControlStageTimes> laps(profile);  // each stage's lap (boxer.h); no clock when null
   const auto& skel = desc.skeleton;
   const int n = skel.size();
   read_actual_state(d, b, n);
+  laps.lap(&ControlStageTimes::pose);
   b.source.tick(dt, Eigen::Rotation2Dd(-b.stance.heading) * b.ctl.anchor, &b.desired);
+  laps.lap(&ControlStageTimes::graph);
   bool swing[2];          // the clip has this foot in the air (a step)
   double clip_ankle_h[2];  // the clip's ankle above its sole's lowest end (m), for the tiptoe test
   clip_feet(desc, b, swing, clip_ankle_h);
+  laps.lap(&ControlStageTimes::pose);
   const bool steps = plans_steps(b);
   if (steps && d.time > 0.0) update_support_base(d, arena, b, dt);
   if (steps && d.time > 0.0) gate_lift_off(m, d, desc, b, swing, dt);
+  laps.lap(&ControlStageTimes::stepping);
   place_desired_pose(desc, arena, b, b.desired);
   if (b.ctl.state.state == BoxerState::GettingUp) {
     // Rising, the boxer makes its way back to its mark (the stance: fighting distance), the root assist guiding it:
@@ -210,14 +216,17 @@ void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const en
     b.ctl.anchor += back;
     b.desired.pose.root_position.head<2>() += back;
   }
+  laps.lap(&ControlStageTimes::pose);
   if (steps) plan_steps(d, desc, arena, b, swing, dt);
   if (steps && d.time > 0.0) take_balance_steps(m, d, desc, arena, b, swing, dt);
+  laps.lap(&ControlStageTimes::stepping);
   if (b.limp) return;
   const bool parent_space = b.settings.space == ServoSpace::Parent || b.settings.space == ServoSpace::ParentMeathook;
   bool loaded[2] = {d.time == 0.0, d.time == 0.0};  // placed on the crates: planted at the start
   if (!b.ctl.joints.empty() && !parent_space) fit_support_legs(m, d, desc, b, swing, clip_ankle_h, loaded, dt);
   // A punch of the match goes for the opponent (game/match/punch_aim.h): its arm bent onto the target.
   apply_punch_aim(desc, b.ctl.aim, b.desired.pose, b.scratch.fk_W, b.scratch.fk_P);
+  laps.lap(&ControlStageTimes::pose);
 
   eng::control::ActualState actual;
   actual.W_a = &b.scratch.W_a;
@@ -237,11 +246,13 @@ void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const en
   gains.omega_n *= b.ctl.gain_scale;
   eng::control::control_step(skel, b.settings.space, gains, b.control_body, b.settings.hook, b.desired, heading, dt, actual, b.ctl.servo,
                              help);
+  laps.lap(&ControlStageTimes::servo);
   // The balance controller writes the torques (QP) or the servo's springs and torques (PD).
   BalanceTick tick{m, d, desc, b, loaded, dt};
   tick.heading = heading;
   tick.help = help;
   std::visit([&tick](auto& c) { actuate(c, tick); }, b.ctl.balance);
+  laps.lap(&ControlStageTimes::qp);
 }
 
 }  // namespace boxing

@@ -143,10 +143,23 @@ const char* servo_space_name(eng::control::ServoSpace s);
 void place_desired_pose(const eng::assets::CharacterDesc& desc, const Arena& arena, const Boxer& b,
                         eng::anim::PoseSample& pose);
 
+// Wall time of boxer_control's stages (milliseconds, ADDED by every tick given it; the caller resets). The stages
+// partition the tick (engine/core/stage_laps.h). Reporting only: control never reads it.
+struct ControlStageTimes {
+  double graph = 0.0;     // the pose source's tick: the clip, or the motion-graph walk (transitions, blending)
+  double pose = 0.0;      // the actual state read, the desired pose placed on the crates, anchored on the feet,
+                          // the legs fitted to the ankles, the punch's aim
+  double stepping = 0.0;  // balance QP: support base, lift-off gate, step planner, balance steps
+  double servo = 0.0;     // the servo's heading and its tick (control_step: eq. 3's targets, implicit springs)
+  double qp = 0.0;        // the balance controller's actuation: the QP's inputs built and solved (or the PD layer)
+  double total() const { return graph + pose + stepping + servo + qp; }
+};
+
 // Reads the boxer's actual world orientations / angular velocities, runs its servo and balance controller and
 // applies the torques (+tau on each bone, -tau on its parent; root help on the pelvis without reaction).
+// profile: when non-null, each stage's wall time is added to it.
 void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const eng::assets::CharacterDesc& desc,
-                   const Arena& arena, Boxer& b, double dt);
+                   const Arena& arena, Boxer& b, double dt, ControlStageTimes* profile = nullptr);
 
 // Works out the boxer's foot contacts from the contacts of the last physics step (once per contact set: after every
 // step and once before the first): b.ctl.contacts.

@@ -269,11 +269,13 @@ void step_world(World& w) {
   // The step's first half (kinematics, contacts, rows, the mass matrix and c(q, v)) once, for the physics and for
   // every boxer's control: the balance QPs read their blocks of d.M_crba and d.qfrc_bias (MuJoCo's mj_step1 /
   // mj_step2 split). Control then writes torques, spring references and forces for the second half.
-  eng::physics::step1(w.model, w.data);
+  eng::physics::StageTimes* physics_stages = w.profile_stages ? &w.profile.physics : nullptr;
+  ControlStageTimes* control_stages = w.profile_stages ? &w.profile.control : nullptr;
+  eng::physics::step1(w.model, w.data, physics_stages);
   const auto t1 = clock::now();
   const ScenarioHooks& scenario = scenario_hooks(w.options.scenario_id);
   if (scenario.before_control) scenario.before_control(w);
-  for (Boxer& b : w.boxers) boxer_control(w.model, w.data, w.boxer_desc, w.arena, b, kPhysicsDt);
+  for (Boxer& b : w.boxers) boxer_control(w.model, w.data, w.boxer_desc, w.arena, b, kPhysicsDt, control_stages);
 
   // The scenario's forces (the push scenario's chest push).
   w.push_active = false;
@@ -281,7 +283,7 @@ void step_world(World& w) {
   interaction_apply_forces(w);
   const auto t2 = clock::now();
 
-  eng::physics::step2(w.model, w.data);
+  eng::physics::step2(w.model, w.data, physics_stages);
   const auto t3 = clock::now();
   for (Boxer& b : w.boxers) boxer_sense_contacts(w.data, b);
   for (Boxer& b : w.boxers) boxer_measure(w.model, w.data, w.boxer_desc, b, kPhysicsDt);
@@ -296,11 +298,36 @@ void step_world(World& w) {
 }
 
 namespace {
-// Mean wall time per 240 Hz tick of each stage of step_world (this machine; reporting only).
+// Mean wall time per 240 Hz tick of each stage of step_world (this machine; reporting only). step1 + control + step2
+// + sense is the whole tick. With the stages profiled, also their split (docs/decisions/tick-stages.md): physics
+// (collision, dynamics, solver, integration; physics_other: step1's input events and clear_applied), control (graph,
+// pose, stepping, servo, qp summed over the boxers, qp_solve the part of qp in the QP's solve; control_other: the
+// scenario's and the player's forces). These with sense add up to the tick.
 nlohmann::json tick_profile_report(const World& w) {
+  const World::TickProfile& p = w.profile;
   const double n = w.steps ? static_cast<double>(w.steps) : 1.0;
-  return {{"step1", w.profile.step1_ms / n}, {"control", w.profile.control_ms / n}, {"step2", w.profile.step2_ms / n},
-          {"sense", w.profile.sense_ms / n}};
+  nlohmann::json r = {{"step1", p.step1_ms / n}, {"control", p.control_ms / n}, {"step2", p.step2_ms / n},
+                      {"sense", p.sense_ms / n}};
+  if (!w.profile_stages) return r;
+  double qp_solve_ms = 0.0;  // the QP histograms' sums (they record every solve since the start, as the profile)
+  for (const Boxer& b : w.boxers)
+    if (b.uses_qp()) {
+      const eng::core::LatencyHistogram& h = std::get<QpBalance>(b.ctl.balance).solve_us;
+      qp_solve_ms += 1e-3 * h.mean_us() * static_cast<double>(h.count());
+    }
+  r["collision"] = p.physics.collision / n;
+  r["dynamics"] = p.physics.dynamics / n;
+  r["solver"] = p.physics.solver / n;
+  r["integration"] = p.physics.integration / n;
+  r["physics_other"] = (p.step1_ms + p.step2_ms - p.physics.total()) / n;
+  r["graph"] = p.control.graph / n;
+  r["pose"] = p.control.pose / n;
+  r["stepping"] = p.control.stepping / n;
+  r["servo"] = p.control.servo / n;
+  r["qp"] = p.control.qp / n;
+  r["qp_solve"] = qp_solve_ms / n;
+  r["control_other"] = (p.control_ms - p.control.total()) / n;
+  return r;
 }
 
 // The balance QP's solve cost (wall clock, this machine): median and 95th percentile per boxer; null with PD.

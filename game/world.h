@@ -13,6 +13,7 @@
 #include "engine/core/result.h"
 #include "engine/physics/data.h"
 #include "engine/physics/model.h"
+#include "engine/physics/step.h"
 #include "game/arena.h"
 #include "game/boxer.h"
 #include "game/cli.h"
@@ -44,12 +45,17 @@ struct World {
   std::vector<LooseBody> loose;         // free crates
   long steps = 0;
   double physics_ms_total = 0.0;        // wall time spent in physics (reporting only, never fed back)
-  // Wall time per stage of step_world, summed over the steps (reporting only): step1 (kinematics, collision,
-  // constraint rows, M and c), control (every boxer: pose source, servo, balance controller), step2 (passive
-  // forces, dynamics, constraint solve, integration), sense (foot contacts, metrics, scenario hooks).
+  // Wall time per stage of step_world, summed over the steps (reporting only): step1 (input events, kinematics,
+  // collision, constraint rows, M and c), control (every boxer: pose source, servo, balance controller; the
+  // scenario's and the player's forces), step2 (passive forces, dynamics, constraint solve, integration), sense (foot
+  // contacts, metrics, scenario hooks). With profile_stages, also the physics step's and the boxers' control's own
+  // stages (control summed over the boxers): the report's tick_profile_ms (docs/decisions/tick-stages.md).
   struct TickProfile {
     double step1_ms = 0.0, control_ms = 0.0, step2_ms = 0.0, sense_ms = 0.0;
+    eng::physics::StageTimes physics;  // collision, dynamics, solver, integration (ms)
+    ControlStageTimes control;         // graph, pose, stepping, servo, qp (ms)
   } profile;
+  bool profile_stages = true;  // off: step1 / step2 / boxer_control read no clock (a few hundred ns a tick)
   bool push_active = false;
   Match match;  // the match scenario's fight (game/match/match.h); inactive elsewhere
   Interaction interaction;  // the player's hands: drags, thrown objects, scripted and recorded input

@@ -8,6 +8,7 @@
 #include <Eigen/Eigenvalues>
 #include <cmath>
 
+#include "engine/core/stage_laps.h"
 #include "engine/physics/dynamics.h"
 #include "engine/physics/spatial.h"
 #include "engine/physics/broadphase.h"
@@ -777,28 +778,38 @@ void integrate(const Model& m, Data& d) {
   d.time += h;
 }
 
-void step1(const Model& m, Data& d) {
+// Each stage's lap goes to its StageTimes field (step.h); with no profile the laps read no clock.
+void step1(const Model& m, Data& d, StageTimes* profile) {
+  eng::core::StageLaps<StageTimes> laps(profile);
   d.contact_begin.clear();  // events are per step (filled again by store_impulses)
   d.contact_end.clear();
   d.hit_events.clear();
   forward_kinematics(m, d);
+  laps.lap(&StageTimes::dynamics);
   collide(m, d);
+  laps.lap(&StageTimes::collision);
   compute_constraints(m, d);
+  laps.lap(&StageTimes::solver);
   mass_matrix(m, d);
   compute_bias(m, d);
+  laps.lap(&StageTimes::dynamics);
 }
 
-void step2(const Model& m, Data& d) {
+void step2(const Model& m, Data& d, StageTimes* profile) {
+  eng::core::StageLaps<StageTimes> laps(profile);
   passive_forces(m, d);
   unconstrained_velocity(m, d);
+  laps.lap(&StageTimes::dynamics);
   point_spring_constraints(m, d);
   solve_constraints(m, d);
+  laps.lap(&StageTimes::solver);
   integrate(m, d);
+  laps.lap(&StageTimes::integration);
 }
 
-void step(const Model& m, Data& d) {
-  step1(m, d);
-  step2(m, d);
+void step(const Model& m, Data& d, StageTimes* profile) {
+  step1(m, d, profile);
+  step2(m, d, profile);
 }
 
 void apply_force_at_point(const Model& m, Data& d, int body, const Vec3& f, const Vec3& p) {

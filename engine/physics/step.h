@@ -63,9 +63,24 @@
 
 namespace eng::physics {
 
-void step(const Model& m, Data& d);   // = step1 + step2
-void step1(const Model& m, Data& d);  // kinematics, contacts, rows, M, its factor, c(q, v)
-void step2(const Model& m, Data& d);  // passive forces, v_free, constraint solve, integrate
+// Wall time of the step's stages (milliseconds, ADDED by every step given it; the caller resets), for profiling:
+// step1 / step2 / step fill it when passed a non-null pointer and read no clock otherwise. The stages partition the
+// step (engine/core/stage_laps.h), so they add up to its whole time. Reporting only: the step never reads it.
+struct StageTimes {
+  double collision = 0.0;    // collide: geom poses, AABBs, broadphase, narrowphase, warm-start matching
+  double dynamics = 0.0;     // forward_kinematics, mass_matrix (CRBA + LTDL factor), compute_bias (RNEA),
+                             // passive_forces, unconstrained_velocity (c with applied forces, the sparse solve)
+  double solver = 0.0;       // compute_constraints + point_spring_constraints (rows, J) and solve_constraints
+                             // (M^-1 J^T, Delassus, warm start, PGS, impulses stored, contact events)
+  double integration = 0.0;  // integrate: q on the manifold, time
+  double total() const { return collision + dynamics + solver + integration; }
+};
+
+void step(const Model& m, Data& d, StageTimes* profile = nullptr);   // = step1 + step2
+// kinematics, contacts, rows, M, its factor, c(q, v)
+void step1(const Model& m, Data& d, StageTimes* profile = nullptr);
+// passive forces, v_free, constraint solve, integrate
+void step2(const Model& m, Data& d, StageTimes* profile = nullptr);
 
 // pipeline stages
 void collide(const Model& m, Data& d);              // fills d.contacts (needs forward_kinematics)

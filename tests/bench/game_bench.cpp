@@ -1,5 +1,6 @@
-// bench_game: the game's world step (physics + control) for two boxers standing, balance QP against the PD
-// balance layer in the same run, and the balance QP's own solve on the inputs of a settled stance.
+// bench_game: the game's world step (physics + control) per stage for one boxer (push, graph-walk) and two (stand,
+// match), the balance QP against the PD balance layer in the same run, and the balance QP's own solve on the inputs
+// of a settled stance.
 // Run with scripts/bench (or build-bench/bench_game). Timings are thread CPU time per 240 Hz tick.
 #include <benchmark/benchmark.h>
 
@@ -42,30 +43,37 @@ std::unique_ptr<boxing::World> make(const char* scenario, const char* balance) {
 std::unique_ptr<boxing::World> stand_world(const char* balance) { return make("stand", balance); }
 
 // One 240 Hz tick of the world step (control + physics) and its split by stage (step_world's own profile, wall
-// time): step1 (kinematics, collision, rows, M, c), control (pose sources, servos, balance controllers), step2
-// (dynamics, constraint solve, integration), sense (foot contacts, metrics); qp_solve: the balance QP's median.
-void BM_Tick(benchmark::State& state, const char* scenario, const char* balance) {
+// time; the report's tick_profile_ms, docs/decisions/tick-stages.md): step1 (kinematics, collision, rows, M, c),
+// control (pose sources, servos, balance controllers), step2 (dynamics, constraint solve, integration), sense (foot
+// contacts, metrics), and the finer stages: physics (collision, dynamics, solver, integration), control (graph, pose,
+// stepping, servo, qp) summed over the boxers; qp_solve_us: the balance QP's median solve (boxer 0).
+// profile = false: the stages unprofiled (the overhead of the profile is the difference to the same case profiled).
+void BM_Tick(benchmark::State& state, const char* scenario, const char* balance, bool profile) {
   auto w = make(scenario, balance);
+  w->profile_stages = profile;
   constexpr int kTicks = 480;
   for (auto _ : state) {
     const double t0 = thread_seconds();
     for (int i = 0; i < kTicks; ++i) boxing::step_world(*w);
     state.SetIterationTime((thread_seconds() - t0) / kTicks);
   }
-  const double n = static_cast<double>(w->steps);
   state.counters["boxers"] = double(w->boxers.size());
-  state.counters["step1_us"] = 1e3 * w->profile.step1_ms / n;
-  state.counters["control_us"] = 1e3 * w->profile.control_ms / n;
-  state.counters["step2_us"] = 1e3 * w->profile.step2_ms / n;
-  state.counters["sense_us"] = 1e3 * w->profile.sense_ms / n;
+  const nlohmann::json r = boxing::world_report(*w)["tick_profile_ms"];
+  for (const auto& [stage, ms] : r.items()) state.counters[stage + "_us"] = 1e3 * ms.get<double>();
   if (w->boxers[0].uses_qp())
-    state.counters["qp_solve_us"] = std::get<boxing::QpBalance>(w->boxers[0].ctl.balance).solve_us.percentile(50);
+    state.counters["qp_solve_median_us"] = std::get<boxing::QpBalance>(w->boxers[0].ctl.balance).solve_us.percentile(50);
   state.counters["fell"] = w->boxers[0].metrics.fell;
 }
-BENCHMARK_CAPTURE(BM_Tick, stand_qp, "stand", "qp")->Iterations(3)->UseManualTime()->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(BM_Tick, stand_pd, "stand", "pd")->Iterations(3)->UseManualTime()->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(BM_Tick, walk_qp, "graph-walk", "qp")->Iterations(3)->UseManualTime()->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(BM_Tick, match_qp, "match", "qp")->Iterations(3)->UseManualTime()->Unit(benchmark::kMicrosecond);
+#define TICK(name, scenario, balance, profile)                                                      \
+  BENCHMARK_CAPTURE(BM_Tick, name, scenario, balance, profile)->Iterations(3)->UseManualTime()->Unit( \
+      benchmark::kMicrosecond)
+TICK(push_qp, "push", "qp", true);  // one boxer standing (the push scenario without a push: boxer 0 alone)
+TICK(stand_qp, "stand", "qp", true);  // two boxers standing
+TICK(stand_pd, "stand", "pd", true);
+TICK(walk_qp, "graph-walk", "qp", true);  // one boxer walking the motion graph
+TICK(match_qp, "match", "qp", true);      // two boxers fighting
+TICK(stand_qp_unprofiled, "stand", "qp", false);
+#undef TICK
 
 // The balance QP's solve alone, on boxer 0's inputs after 1 s of standing (the same call boxer_control makes).
 void BM_BalanceQpSolve(benchmark::State& state) {

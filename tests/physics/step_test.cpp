@@ -46,6 +46,27 @@ TEST(StepSplit, Step1ThenStep2IsStepBitForBit) {
   EXPECT_TRUE(same_bits(a.M, b.M));
 }
 
+// step(m, d, &times) times its stages (step.h StageTimes) and steps exactly as step(m, d): the clock is never read back.
+TEST(StepSplit, ProfiledStepIsTheSameBitForBit) {
+  const Model m = humanoid_on_floor();
+  Data a = make_data(m), b = make_data(m);
+  a.q[2] = b.q[2] = 1.0;
+  StageTimes t;
+  for (int i = 0; i < 300; ++i) {
+    forward_kinematics(m, a);
+    control(m, a, i);
+    step(m, a);
+    forward_kinematics(m, b);
+    control(m, b, i);
+    step(m, b, &t);
+    ASSERT_TRUE(same_bits(a.q, b.q)) << "step " << i;
+    ASSERT_TRUE(same_bits(a.v, b.v)) << "step " << i;
+  }
+  for (const double s : {t.collision, t.dynamics, t.solver, t.integration}) EXPECT_GE(s, 0.0);
+  EXPECT_GT(t.dynamics, 0.0);
+  EXPECT_GT(t.solver, 0.0);  // the humanoid landed: contact rows were solved
+}
+
 TEST(StepSplit, AfterStep1MassMatrixAndBiasAreThePhysicalOnes) {
   const Model m = humanoid_on_floor();
   Data d = make_data(m);
