@@ -70,6 +70,7 @@ eng::render::RendererConfig renderer_config(const Options& o) {
   c.height = o.height;
   c.validation = o.validation;
   c.vsync = o.vsync;
+  c.render_scale = o.render_scale;
   return c;
 }
 

@@ -65,6 +65,8 @@ flags:
   --ghost                draw the desired pose as a translucent ghost
   --no-validation        skip the Vulkan validation layer (default: on, every error is counted)
   --no-vsync             window: present without vsync
+  --render-scale S|auto  the 3D scene's resolution per axis, 0.25-1, upscaled under the HUD (default auto: on a CPU
+                         rasteriser such as lavapipe the scene keeps to 0.52 Mpx, 0.75 at 1280x720; native on a GPU)
   --servo MODE           world | person | parent | parent-meathook (boxer scenarios)
   --push-dir DEG         push scenario: direction in boxer 0's heading frame (0 = toward where it faces)
   --push-force N         push scenario: force in newtons
@@ -253,6 +255,13 @@ eng::Result<Options> parse_cli(const std::vector<std::string>& args) {
       if (!parse_double(*v, 0.0, 1e4, x)) return bad(flag + " must be a non-negative number, got '" + *v + "'");
       if (flag == "--servo-wn") o.servo_omega_n = x;
       else o.servo_zeta = x;
+    } else if (flag == "--render-scale") {
+      auto v = value();
+      if (!v) return missing();
+      double x = 0.0;
+      if (*v != "auto" && !parse_double(*v, 0.25, 1.0, x))
+        return bad("--render-scale must be auto or a number from 0.25 to 1, got '" + *v + "'");
+      o.render_scale = x;
     } else if (flag == "--balance") {
       auto v = value();
       if (!v) return missing();

@@ -33,6 +33,9 @@ struct Options {
   bool overlay_given = false;
   bool ghost = false;                  // translucent desired-pose ghost
   bool vsync = true;
+  // The 3D scene's resolution per axis, upscaled under the HUD; 0 = auto (a CPU rasteriser keeps the scene within
+  // eng::render::kCpuScenePixels, a GPU renders native).
+  double render_scale = 0.0;
   // scenario parameters (boxer / push-recovery scenarios)
   std::string servo = "world";         // world | person | parent | parent-meathook
   double push_dir_deg = 0.0;

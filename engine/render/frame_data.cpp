@@ -44,7 +44,7 @@ FrameUniforms Renderer::Impl::make_uniforms(const FrameDesc& frame) {
     glm::mat4 lview = glm::lookAtRH(center - sun_dir * (radius + 1.0f), center, up);
     // Snap the light's origin to whole shadow texels (in light space) so shadow edges do not crawl as casters
     // move and the fitted sphere's centre slides.
-    const float texel = 2.0f * radius / static_cast<float>(kShadowSize);
+    const float texel = 2.0f * radius / static_cast<float>(shadow_size);
     const glm::vec3 origin_ls = glm::vec3(lview * glm::vec4(0, 0, 0, 1));
     const glm::vec3 snapped(std::floor(origin_ls.x / texel) * texel, std::floor(origin_ls.y / texel) * texel, origin_ls.z);
     lview = glm::translate(glm::mat4(1.0f), snapped - origin_ls) * lview;
@@ -53,7 +53,7 @@ FrameUniforms Renderer::Impl::make_uniforms(const FrameDesc& frame) {
     const float far_plane = 2.0f * radius + 1.0f + 4.0f * radius + 20.0f;
     const glm::mat4 lproj = glm::orthoRH_ZO(-radius, radius, -radius, radius, 0.0f, far_plane);
     u.light_view_proj = lproj * lview;
-    texel_world = 2.0f * radius / static_cast<float>(kShadowSize);
+    texel_world = 2.0f * radius / static_cast<float>(shadow_size);
     // The map's footprint on the ground: its square (a little wider) carried along the sun onto z = 0. Only this
     // part of the ground can be shadowed; ground.frag's shadowed variant draws it, the cheap one the rest. A sun
     // lower than ~11 degrees stretches it too far: then the whole ground takes the shadowed variant.
@@ -82,7 +82,7 @@ FrameUniforms Renderer::Impl::make_uniforms(const FrameDesc& frame) {
   u.ground_tint = glm::vec4(0.30f, 0.26f, 0.20f, 1.0f);
   u.fog = glm::vec4(2.2f / std::max(cam.zfar, 1.0f), 0, 0, 0);
   u.viewport = glm::vec4(extent.width, extent.height, 1.0f / extent.width, 1.0f / extent.height);
-  u.shadow = glm::vec4(1.0f / kShadowSize, 1.5f * texel_world, casters ? 1.0f : 0.0f, footprint ? 1.0f : 0.0f);
+  u.shadow = glm::vec4(1.0f / shadow_size, 1.5f * texel_world, casters ? 1.0f : 0.0f, footprint ? 1.0f : 0.0f);
   return u;
 }
 

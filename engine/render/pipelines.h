@@ -8,7 +8,9 @@ namespace eng::render {
 constexpr VkFormat kColorFormat = VK_FORMAT_R8G8B8A8_SRGB;  // gamma-correct: shaders write linear, hardware encodes
 constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 constexpr VkFormat kShadowFormat = VK_FORMAT_D32_SFLOAT;
+// The sun's shadow map, texels a side: on a GPU; a CPU rasteriser uses kShadowSizeCpu (RendererConfig).
 constexpr uint32_t kShadowSize = 2048;
+constexpr uint32_t kShadowSizeCpu = 1024;
 
 // Vertex of a debug line (per-vertex colour); points use eng::render::DebugPoint directly as instance data.
 struct DebugVertex {

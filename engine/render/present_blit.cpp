@@ -1,4 +1,4 @@
-// Windowed mode only: blits the finished offscreen image (scene + overlay) into the acquired swapchain image and
+// Windowed mode: blits the finished offscreen image (scene + overlay) into the acquired swapchain image and
 // leaves it ready to present. Both images are sRGB, so the blit copies colours exactly.
 #include "engine/render/renderer_impl.h"
 
@@ -28,6 +28,37 @@ void Renderer::Impl::record_present_blit(VkCommandBuffer cmd, int swap_image) {
   b.oldLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
   b.newLayout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
   vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 0, 0, nullptr, 0, nullptr, 1, &b);
+}
+
+// The scene rendered smaller (render_scale) is stretched over the whole target with a bilinear blit, before the HUD
+// is drawn on top at full resolution. Leaves the target in TRANSFER_SRC layout, as the scene pass does when native.
+void Renderer::Impl::record_upscale(VkCommandBuffer cmd) {
+  VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+  b.srcAccessMask = 0;  // the last frame's reads of the target (readback, present blit) are in the stage below
+  b.dstAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+  b.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;  // fully overwritten
+  b.newLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+  b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  b.image = resolved.image;
+  b.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                       VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0, nullptr, 1, &b);
+  VkImageBlit blit{};
+  blit.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  blit.srcOffsets[1] = {static_cast<int32_t>(scene_extent.width), static_cast<int32_t>(scene_extent.height), 1};
+  blit.dstSubresource = blit.srcSubresource;
+  blit.dstOffsets[1] = {static_cast<int32_t>(extent.width), static_cast<int32_t>(extent.height), 1};
+  // The scene pass left scene_color in TRANSFER_SRC layout and made its writes visible to transfers (its
+  // outgoing dependency).
+  vkCmdBlitImage(cmd, scene_color.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, resolved.image,
+                 VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit, upscale_linear ? VK_FILTER_LINEAR : VK_FILTER_NEAREST);
+  b.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+  b.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+  b.oldLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+  b.newLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                       VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, 0, 0, nullptr, 0,
+                       nullptr, 1, &b);
 }
 
 }  // namespace eng::render

@@ -48,10 +48,18 @@ eng::Result<void> Renderer::Impl::init() {
   int want = cfg.msaa_samples;
   if (want <= 0) want = ctx->props.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU ? 1 : 4;
   samples = pick_samples(ctx->props, want);
+  // The scene's resolution: as asked, or (0) by device: the CPU pixel budget on a CPU rasteriser, native on a GPU.
+  if (cfg.render_scale > 0.0) scale_setting = std::clamp(cfg.render_scale, 0.25, 1.0);
+  else scale_setting = ctx->props.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU ? 0.0 : 1.0;
+  shadow_size = cfg.shadow_map_size > 0 ? static_cast<uint32_t>(std::clamp(cfg.shadow_map_size, 256, 8192))
+              : ctx->props.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU ? kShadowSizeCpu : kShadowSize;
+  VkFormatProperties cf;
+  vkGetPhysicalDeviceFormatProperties(ctx->physical, kColorFormat, &cf);
+  upscale_linear = cf.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT;
   if (auto r = create_pipelines(*ctx, samples, pipes); !r) return r;
   if (auto r = overlay.init(*ctx, pipes.overlay_pass, ui); !r) return r;
 
-  auto sm = ctx->create_image({kShadowSize, kShadowSize}, kShadowFormat,
+  auto sm = ctx->create_image({shadow_size, shadow_size}, kShadowFormat,
                               VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
                               VK_SAMPLE_COUNT_1_BIT, VK_IMAGE_ASPECT_DEPTH_BIT);
   if (!sm) return eng::make_error(sm.error());
@@ -60,7 +68,7 @@ eng::Result<void> Renderer::Impl::init() {
   fci.renderPass = pipes.shadow_pass;
   fci.attachmentCount = 1;
   fci.pAttachments = &shadow_map.view;
-  fci.width = fci.height = kShadowSize;
+  fci.width = fci.height = shadow_size;
   fci.layers = 1;
   ENG_VK_TRY(vkCreateFramebuffer(ctx->device, &fci, nullptr, &shadow_fb), "vkCreateFramebuffer(shadow)");
   // Hardware depth comparison; bilinear-filtered compares (where supported) smooth the PCF kernel further.
@@ -154,6 +162,7 @@ void Renderer::Impl::record(PerFrame& f, const FrameDesc& frame, int swap_image)
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes.layout, 0, 1, &f.set, 0, nullptr);
   record_shadow_pass(cmd, frame);
   record_scene_pass(cmd, f, frame);
+  if (scaled()) record_upscale(cmd);
   if (frame.overlay) record_overlay_pass(cmd);
   if (swap_image >= 0) record_present_blit(cmd, swap_image);
   vkEndCommandBuffer(cmd);

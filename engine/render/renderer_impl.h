@@ -54,12 +54,17 @@ struct Renderer::Impl {
   Pipelines pipes;
   eng::ui::Ui ui;  // the game builds its UI frames here; the overlay pass draws the last one
   Overlay overlay;
+  uint32_t shadow_size = kShadowSize;  // texels a side (init: by device or as configured)
   Image shadow_map;
   VkFramebuffer shadow_fb = VK_NULL_HANDLE;
   VkSampler shadow_sampler = VK_NULL_HANDLE;
 
-  VkExtent2D extent{};
+  VkExtent2D extent{};        // the target: what is read back or presented
+  VkExtent2D scene_extent{};  // the 3D scene's (extent x render scale); equal to extent when native
+  double scale_setting = 1.0; // cfg.render_scale resolved for this device (init); <= 0 = by pixel budget
+  bool upscale_linear = true;  // the colour format filters linearly (else the upscale is nearest)
   Image color_msaa, depth, resolved;
+  Image scene_color;  // the scene at scene_extent, upscaled into `resolved` (only while scene_extent != extent)
   VkFramebuffer scene_fb = VK_NULL_HANDLE, overlay_fb = VK_NULL_HANDLE;
   Buffer readback;
   bool have_frame = false;
@@ -95,6 +100,8 @@ struct Renderer::Impl {
   void record_debug_draw(VkCommandBuffer cmd, PerFrame& f, const FrameDesc& frame);  // debug_draw.cpp
   void record_overlay_pass(VkCommandBuffer cmd);             // renderer.cpp
   void record_present_blit(VkCommandBuffer cmd, int swap_image);                     // present_blit.cpp
+  void record_upscale(VkCommandBuffer cmd);                                          // present_blit.cpp
+  bool scaled() const { return scene_extent.width != extent.width || scene_extent.height != extent.height; }
   // One instanced draw per run of equal meshes in the mesh-sorted opaque list (shared by shadow + scene).
   void draw_opaque(VkCommandBuffer cmd, const FrameDesc& frame);
   void draw_mesh(VkCommandBuffer cmd, MeshId mesh, uint32_t first_instance, uint32_t count);

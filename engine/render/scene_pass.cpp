@@ -1,4 +1,5 @@
-// Scene pass into the colour target (multisampled and resolved at the end where MSAA is on): opaque instances,
+// Scene pass into the colour target at the scene's resolution (multisampled and resolved at the end where MSAA is on;
+// upscaled into the target afterwards where the scene is smaller, record_upscale): opaque instances,
 // ground, sky, alpha-blended ghosts (depth test on, depth write off, back to front), then debug lines/points.
 #include "engine/render/renderer_impl.h"
 
@@ -11,11 +12,11 @@ void Renderer::Impl::record_scene_pass(VkCommandBuffer cmd, PerFrame& f, const F
   VkRenderPassBeginInfo rp{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
   rp.renderPass = pipes.scene_pass;
   rp.framebuffer = scene_fb;
-  rp.renderArea = {{0, 0}, extent};
+  rp.renderArea = {{0, 0}, scene_extent};
   rp.clearValueCount = 3;
   rp.pClearValues = clears;
   vkCmdBeginRenderPass(cmd, &rp, VK_SUBPASS_CONTENTS_INLINE);
-  set_viewport(cmd, extent);
+  set_viewport(cmd, scene_extent);
   // Front to back as far as it goes, so the depth test rejects hidden fragments before they are shaded: opaque
   // bodies, the ground (its shadowed footprint, then the rest), the sky where nothing drew; then the blended
   // ghosts and the debug drawing.

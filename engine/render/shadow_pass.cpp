@@ -1,4 +1,4 @@
-// Sun shadow map: depth-only render of the opaque casters into a 2048^2 D32 map (slope-scaled bias is baked into
+// Sun shadow map: depth-only render of the opaque casters into a square D32 map (2048^2 on a GPU, 1024^2 on a CPU rasteriser; slope-scaled bias is baked into
 // the pipeline). Always recorded, even without casters, so the sampled image is in a defined layout.
 #include "engine/render/renderer_impl.h"
 
@@ -32,12 +32,12 @@ void Renderer::Impl::record_shadow_pass(VkCommandBuffer cmd, const FrameDesc& fr
   VkRenderPassBeginInfo rp{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
   rp.renderPass = pipes.shadow_pass;
   rp.framebuffer = shadow_fb;
-  rp.renderArea = {{0, 0}, {kShadowSize, kShadowSize}};
+  rp.renderArea = {{0, 0}, {shadow_size, shadow_size}};
   rp.clearValueCount = 1;
   rp.pClearValues = &clear;
   vkCmdBeginRenderPass(cmd, &rp, VK_SUBPASS_CONTENTS_INLINE);
   if (!frame.opaque.empty()) {
-    set_viewport(cmd, {kShadowSize, kShadowSize});
+    set_viewport(cmd, {shadow_size, shadow_size});
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes.shadow);
     draw_opaque(cmd, frame);
   }

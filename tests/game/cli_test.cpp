@@ -141,3 +141,20 @@ TEST(Cli, SteppingPlacementAndFlatParseAndRejectBadValues) {
   EXPECT_NE(boxing::help_text().find("--stepping"), std::string::npos);
 }
 }  // namespace
+
+TEST(Cli, RenderScaleIsAutoByDefaultAndTakesAShareFromAQuarterToOne) {
+  auto d = boxing::parse_cli({});
+  ASSERT_TRUE(d.ok());
+  EXPECT_EQ(d->render_scale, 0.0);  // auto: by device (renderer.h)
+  auto o = boxing::parse_cli({"--render-scale", "0.5"});
+  ASSERT_TRUE(o.ok()) << o.error();
+  EXPECT_EQ(o->render_scale, 0.5);
+  o = boxing::parse_cli({"--render-scale", "auto"});
+  ASSERT_TRUE(o.ok()) << o.error();
+  EXPECT_EQ(o->render_scale, 0.0);
+  for (const char* v : {"0", "0.2", "1.5", "nan", "big"}) {
+    auto bad = boxing::parse_cli({"--render-scale", v});
+    ASSERT_FALSE(bad.ok()) << v;
+    EXPECT_NE(bad.error().find("--render-scale must be auto or a number from 0.25 to 1"), std::string::npos) << bad.error();
+  }
+}
