@@ -232,16 +232,15 @@ eng::Result<CharacterDesc> load_character(const GltfScene& scene, const std::str
         throw Bad{"node '" + name + "' has a scale; bones must have unit scale"};
       // A joint offset beyond any body's size is a unit or export mistake (glTF is in metres): a limb 1e30 m away
       // loaded and simulated without a word before (scripts/bad-input).
-      const double offset =
-          Eigen::Vector3d(widen(n.translation.x), widen(n.translation.y), widen(n.translation.z)).norm();
-      if (!(offset <= kMaxBoneOffset))
-        throw Bad{"node '" + name + "' sits " + number_text(offset) + " m from its parent; a bone's offset must be " +
+      const Eigen::Vector3d offset(widen(n.translation.x), widen(n.translation.y), widen(n.translation.z));
+      if (!(offset.norm() <= kMaxBoneOffset))
+        throw Bad{"node '" + name + "' sits " + number_text(offset.norm()) + " m from its parent; a bone's offset must be " +
                   "under " + number_text(kMaxBoneOffset) + " m (glTF is in metres)"};
       BonePhysics b = parse_bone(n.extras, name, parent_bone < 0);
       const int bone = d.skeleton.size();
       d.skeleton.name.push_back(name);
       d.skeleton.parent.push_back(parent_bone);
-      d.skeleton.offset.emplace_back(widen(n.translation.x), widen(n.translation.y), widen(n.translation.z));
+      d.skeleton.offset.push_back(offset);
       d.bones.push_back(std::move(b));
       d.bone_node.push_back(ni);
       for (auto it = n.children.rbegin(); it != n.children.rend(); ++it) stack.emplace_back(*it, bone);

@@ -18,12 +18,10 @@ inline void enable_sync_validation() {
   setenv("VK_LAYER_ENABLES", "VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT", 0);
 }
 
-inline std::unique_ptr<eng::render::Renderer> make_renderer(int w, int h, std::string* skip_reason) {
+// A headless renderer with `cfg` (validation forced on).
+inline std::unique_ptr<eng::render::Renderer> make_renderer(eng::render::RendererConfig cfg, std::string* skip_reason) {
   boxing_test::pin_lavapipe_env();
   enable_sync_validation();
-  eng::render::RendererConfig cfg;
-  cfg.width = w;
-  cfg.height = h;
   cfg.validation = true;
   auto r = eng::render::Renderer::create_headless(cfg);
   if (!r) {
@@ -38,14 +36,22 @@ inline std::unique_ptr<eng::render::Renderer> make_renderer(int w, int h, std::s
   return std::move(r.value());
 }
 
+inline std::unique_ptr<eng::render::Renderer> make_renderer(int w, int h, std::string* skip_reason) {
+  eng::render::RendererConfig cfg;
+  cfg.width = w;
+  cfg.height = h;
+  return make_renderer(cfg, skip_reason);
+}
+
 // Skips when no device, fails (returns from the test) when creation failed for any other reason.
-#define MAKE_RENDERER_OR_RETURN(var, w, h)                   \
-  std::string var##_skip;                                    \
-  auto var = render_test::make_renderer(w, h, &var##_skip);  \
-  if (!var) {                                                \
-    if (!var##_skip.empty()) GTEST_SKIP() << var##_skip;     \
-    return;                                                  \
+#define MAKE_RENDERER_WITH_OR_RETURN(var, cfg)                \
+  std::string var##_skip;                                     \
+  auto var = render_test::make_renderer(cfg, &var##_skip);    \
+  if (!var) {                                                 \
+    if (!var##_skip.empty()) GTEST_SKIP() << var##_skip;      \
+    return;                                                   \
   }
+#define MAKE_RENDERER_OR_RETURN(var, w, h) MAKE_RENDERER_WITH_OR_RETURN(var, (eng::render::RendererConfig{w, h}))
 
 inline eng::render::FrameDesc basic_frame() {
   eng::render::FrameDesc f;

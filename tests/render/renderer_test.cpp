@@ -145,16 +145,12 @@ TEST(Renderer, ReportsDevice) {
 }
 
 TEST(Renderer, WithoutMsaaStillRendersCleanly) {
-  boxing_test::pin_lavapipe_env();
-  render_test::enable_sync_validation();
   RendererConfig cfg;
   cfg.width = 160;
   cfg.height = 120;
   cfg.msaa_samples = 1;  // the single-sample path renders straight into the resolved image
-  auto rr = Renderer::create_headless(cfg);
-  if (!rr && rr.error().rfind("no Vulkan device", 0) == 0) GTEST_SKIP() << rr.error();
-  ASSERT_TRUE(rr.ok()) << rr.error();
-  Renderer& r = **rr;
+  MAKE_RENDERER_WITH_OR_RETURN(rr, cfg);
+  Renderer& r = *rr;
   const MeshId box = r.upload_mesh(make_box_mesh({0.5f, 0.5f, 0.5f}));
   FrameDesc f = render_test::basic_frame();
   f.camera.eye = {0.0f, -5.0f, 1.0f};
@@ -173,18 +169,14 @@ TEST(Renderer, WithoutMsaaStillRendersCleanly) {
 // frame (same size, the same picture within a blur), the HUD on top stays pixel-sharp, and the validation layer
 // (synchronization checks on) sees no error in the extra blit.
 TEST(Renderer, ScaledSceneMatchesTheNativeFrameAndKeepsTheHudSharp) {
-  boxing_test::pin_lavapipe_env();
-  render_test::enable_sync_validation();
   eng::Image img[2];
   for (int k = 0; k < 2; ++k) {
     RendererConfig cfg;
     cfg.width = 320;
     cfg.height = 240;
     cfg.render_scale = k == 0 ? 1.0 : 0.5;
-    auto rr = Renderer::create_headless(cfg);
-    if (!rr && rr.error().rfind("no Vulkan device", 0) == 0) GTEST_SKIP() << rr.error();
-    ASSERT_TRUE(rr.ok()) << rr.error();
-    Renderer& r = **rr;
+    MAKE_RENDERER_WITH_OR_RETURN(rr, cfg);
+    Renderer& r = *rr;
     const MeshId box = r.upload_mesh(make_box_mesh({0.5f, 0.5f, 0.5f}));
     FrameDesc f = render_test::basic_frame();
     f.opaque.push_back({box, at({0, 0, 0.5f}), Material{{0.8f, 0.05f, 0.05f, 1.0f}}});
