@@ -71,13 +71,16 @@ eng::render::RendererConfig renderer_config(const Options& o) {
   c.validation = o.validation;
   c.vsync = o.vsync;
   c.render_scale = o.render_scale;
+  using P = eng::render::RendererConfig::Present;
+  c.present = o.present == "swapchain" ? P::Swapchain : o.present == "shm" ? P::SharedMemory : P::Auto;
   return c;
 }
 
 // The frame costs: `simulate` (4 physics ticks), `render` (wall time of fill_frame + render, headless also the read
-// back) and `render_cpu` (the CPU time all threads spent in it, headless only: the window overlaps frames).
+// back), `render_cpu` (the CPU time all threads spent in it, headless only: the window overlaps frames) and, in the
+// window, `frame` (from one shown frame to the next: what the player sees, simulation and UI included).
 struct RunTimes {
-  FrameTimes sim, render, render_cpu;
+  FrameTimes sim, render, render_cpu, frame;
   double first_frame_s = -1.0;  // start_to_first_frame_s; -1 when nothing was rendered
   void frame_done() {
     if (first_frame_s < 0.0) first_frame_s = std::chrono::duration<double>(clock_type::now() - kProgramStart).count();
@@ -100,6 +103,8 @@ nlohmann::json base_report(const Options& o, const World& w, long frames, const 
                      {"warnings", r.validation_warnings()}};
   j["frame_times"] = {{"simulate", t.sim.summary()}, {"render", t.render.summary()}};
   if (headless) j["frame_times"]["render_cpu"] = t.render_cpu.summary();
+  else j["frame_times"]["frame"] = t.frame.summary();
+  j["present"] = r.present_path();
   j["start_to_first_frame_s"] = t.first_frame_s;
   j["max_rss_mb"] = max_rss_mb();
   return j;
@@ -268,9 +273,10 @@ int run_windowed(const Options& o) {
   bool left_was_down = false;
   RunTimes times;
   FrameTimes &sim = times.sim, &render = times.render;
-  long frames = 0;
+  long frames = 0, frames_shown = 0;
   int shots = 0;
   double accumulator = 0.0;
+  clock_type::time_point last_shown{};
   auto last = clock_type::now();
   // The instant replay (match): a second after a knockdown, the 1.5 s before it and the second after, at 0.35x from
   // the side camera; the simulation waits (it is not stepped), so the fight is the same with or without replays.
@@ -400,7 +406,8 @@ int run_windowed(const Options& o) {
                     panel.paused ? "PAUSED" : time_scale_name(panel), o.scenario.c_str(),
                     static_cast<unsigned long long>(w.options.seed));
       // Narrow enough to clear the match panel at 1280 px; the other keys are listed in the control panel.
-      HudStats stats{render.ms.empty() ? 0.0f : float(render.ms.back()), r.device_name(),
+      // The HUD shows the frame as the player gets it: from one shown frame to the next.
+      HudStats stats{times.frame.ms.empty() ? 0.0f : float(times.frame.ms.back()), r.device_name(),
                      {status, "F12 shot  H overlay  C camera  Tab panel  Esc quit"}};
       draw_stats_panel(stats);
       draw_control_panel(w, view, panel);
@@ -433,7 +440,10 @@ int run_windowed(const Options& o) {
       std::fprintf(stderr, "boxing: rendering failed: %s\n", ok.error().c_str());
       return 1;
     }
-    render.ms.push_back(std::chrono::duration<double, std::milli>(clock_type::now() - t1).count());
+    const auto t2 = clock_type::now();
+    render.ms.push_back(std::chrono::duration<double, std::milli>(t2 - t1).count());
+    if (frames_shown++ > 0) times.frame.ms.push_back(std::chrono::duration<double, std::milli>(t2 - last_shown).count());
+    last_shown = t2;
     times.frame_done();
     if (win.key_pressed(GLFW_KEY_F12) || (!o.screenshot.empty() && win.should_close())) {
       std::string path = o.screenshot;

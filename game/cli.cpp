@@ -67,6 +67,8 @@ flags:
   --no-vsync             window: present without vsync
   --render-scale S|auto  the 3D scene's resolution per axis, 0.25-1, upscaled under the HUD (default auto: on a CPU
                          rasteriser such as lavapipe the scene keeps to 0.52 Mpx, 0.75 at 1280x720; native on a GPU)
+  --present MODE         window: auto | swapchain | shm (default auto: a CPU rasteriser shows frames through X11 shared
+                         memory, lavapipe's own path copies each through the X socket on servers without DRI3)
   --servo MODE           world | person | parent | parent-meathook (boxer scenarios)
   --push-dir DEG         push scenario: direction in boxer 0's heading frame (0 = toward where it faces)
   --push-force N         push scenario: force in newtons
@@ -262,6 +264,12 @@ eng::Result<Options> parse_cli(const std::vector<std::string>& args) {
       if (*v != "auto" && !parse_double(*v, 0.25, 1.0, x))
         return bad("--render-scale must be auto or a number from 0.25 to 1, got '" + *v + "'");
       o.render_scale = x;
+    } else if (flag == "--present") {
+      auto v = value();
+      if (!v) return missing();
+      if (*v != "auto" && *v != "swapchain" && *v != "shm")
+        return bad("--present must be auto, swapchain or shm, got '" + *v + "'");
+      o.present = *v;
     } else if (flag == "--balance") {
       auto v = value();
       if (!v) return missing();

@@ -36,6 +36,7 @@ struct Options {
   // The 3D scene's resolution per axis, upscaled under the HUD; 0 = auto (a CPU rasteriser keeps the scene within
   // eng::render::kCpuScenePixels, a GPU renders native).
   double render_scale = 0.0;
+  std::string present = "auto";        // window: auto | swapchain | shm (eng::render::RendererConfig::Present)
   // scenario parameters (boxer / push-recovery scenarios)
   std::string servo = "world";         // world | person | parent | parent-meathook
   double push_dir_deg = 0.0;

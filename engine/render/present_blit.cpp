@@ -1,6 +1,9 @@
 // Windowed mode: blits the finished offscreen image (scene + overlay) into the acquired swapchain image and
-// leaves it ready to present. Both images are sRGB, so the blit copies colours exactly.
+// leaves it ready to present. Both images are sRGB, so the blit copies colours exactly. Or, through shared memory,
+// copies it out to the CPU and into the window's shared image.
 #include "engine/render/renderer_impl.h"
+
+#include <cstring>
 
 namespace eng::render {
 
@@ -59,6 +62,43 @@ void Renderer::Impl::record_upscale(VkCommandBuffer cmd) {
   vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT,
                        VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, 0, 0, nullptr, 0,
                        nullptr, 1, &b);
+}
+
+// Shared-memory present: the finished frame to this slot's host buffer, visible to the CPU at the fence.
+void Renderer::Impl::record_shm_copy(VkCommandBuffer cmd, PerFrame& f) {
+  VkBufferImageCopy copy{};
+  copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  copy.imageExtent = {extent.width, extent.height, 1};
+  // The overlay pass (or the scene pass, or the upscale) left `resolved` in TRANSFER_SRC with its writes visible
+  // to transfers.
+  vkCmdCopyImageToBuffer(cmd, resolved.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, f.present_copy.buffer, 1, &copy);
+  VkBufferMemoryBarrier b{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER};
+  b.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+  b.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+  b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  b.buffer = f.present_copy.buffer;
+  b.size = VK_WHOLE_SIZE;
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 0, nullptr, 1, &b, 0, nullptr);
+}
+
+void Renderer::Impl::show_shm_pending() {
+  if (shm_pending < 0) return;
+  PerFrame& p = frames[static_cast<size_t>(shm_pending)];
+  shm_pending = -1;
+  if (vkWaitForFences(ctx->device, 1, &p.fence, VK_TRUE, UINT64_MAX) != VK_SUCCESS) return;
+  // R, G, B, A (the frame, sRGB-encoded) to B, G, R, X (the window's visual): a swap of bytes 0 and 2, written
+  // row by row into the shared image (its rows may be padded).
+  const int w = shm->width(), h = shm->height();
+  const auto* src = static_cast<const uint32_t*>(p.present_copy.mapped);
+  for (int y = 0; y < h; ++y) {
+    const uint32_t* s = src + static_cast<size_t>(y) * static_cast<size_t>(w);
+    uint32_t* d = reinterpret_cast<uint32_t*>(shm->pixels() + static_cast<size_t>(y) * static_cast<size_t>(shm->stride()));
+    for (int x = 0; x < w; ++x) {
+      const uint32_t c = s[x];
+      d[x] = (c & 0xff00ff00u) | ((c >> 16) & 0xffu) | ((c & 0xffu) << 16);
+    }
+  }
+  shm->present();
 }
 
 }  // namespace eng::render

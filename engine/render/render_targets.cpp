@@ -1,5 +1,5 @@
 // Offscreen targets (MSAA colour, depth, resolved colour, framebuffers, readback buffer) and their recreation
-// when the window's swapchain changes size.
+// when the window's swapchain (or shared-memory surface) changes size.
 #include "engine/render/renderer_impl.h"
 
 #include <algorithm>
@@ -61,6 +61,9 @@ eng::Result<void> Renderer::Impl::create_targets(VkExtent2D size) {
   auto rb = ctx->create_buffer(VkDeviceSize(size.width) * size.height * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
   if (!rb) return eng::make_error(rb.error());
   readback = *rb;
+  if (shm)
+    for (PerFrame& f : frames)
+      if (auto r = ensure(f.present_copy, rb->size, VK_BUFFER_USAGE_TRANSFER_DST_BIT); !r) return r;
   have_frame = false;
   return {};
 }
@@ -74,6 +77,29 @@ void Renderer::Impl::destroy_targets() {
   ctx->destroy(resolved);
   ctx->destroy(scene_color);
   ctx->destroy(readback);
+}
+
+eng::Result<void> Renderer::Impl::recreate_window_targets() {
+  return shm ? recreate_shm_surface() : recreate_swapchain();
+}
+
+eng::Result<void> Renderer::Impl::recreate_shm_surface() {
+  vkDeviceWaitIdle(ctx->device);
+  shm_pending = -1;  // a frame of the old size is not shown
+  const glm::ivec2 fb = window->framebuffer_size();
+  if (fb.x <= 0 || fb.y <= 0) {
+    swapchain_dirty = true;  // minimised mid-resize: retry once the window has a size again
+    return {};
+  }
+  if (shm->width() != fb.x || shm->height() != fb.y) {
+    shm.reset();
+    auto s = platform::ShmSurface::create(*window, fb.x, fb.y);
+    if (!s) return eng::make_error(s.error());
+    shm = std::move(*s);
+  }
+  swapchain_dirty = false;
+  destroy_targets();
+  return create_targets({static_cast<uint32_t>(fb.x), static_cast<uint32_t>(fb.y)});
 }
 
 eng::Result<void> Renderer::Impl::recreate_swapchain() {

@@ -28,7 +28,7 @@ Renderer::Impl::~Impl() {
   for (auto& f : frames) {
     if (f.fence) vkDestroyFence(dev, f.fence, nullptr);
     if (f.image_ready) vkDestroySemaphore(dev, f.image_ready, nullptr);
-    for (Buffer* b : {&f.uniforms, &f.instances, &f.lines, &f.points}) ctx->destroy(*b);
+    for (Buffer* b : {&f.uniforms, &f.instances, &f.lines, &f.points, &f.present_copy}) ctx->destroy(*b);
   }
   if (pool) vkDestroyDescriptorPool(dev, pool, nullptr);
   for (auto& m : meshes) {
@@ -115,7 +115,7 @@ eng::Result<void> Renderer::Impl::init() {
     if (auto r = ensure(f.points, 64 * sizeof(DebugPoint), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT); !r) return r;
     write_set(f);
   }
-  if (window) return recreate_swapchain();
+  if (window) return recreate_window_targets();
   return create_targets({static_cast<uint32_t>(cfg.width), static_cast<uint32_t>(cfg.height)});
 }
 
@@ -165,6 +165,7 @@ void Renderer::Impl::record(PerFrame& f, const FrameDesc& frame, int swap_image)
   if (scaled()) record_upscale(cmd);
   if (frame.overlay) record_overlay_pass(cmd);
   if (swap_image >= 0) record_present_blit(cmd, swap_image);
+  if (shm) record_shm_copy(cmd, f);
   vkEndCommandBuffer(cmd);
 }
 
@@ -189,9 +190,9 @@ eng::Result<void> Renderer::Impl::render(const FrameDesc& frame) {
   if (window) {
     if (window->minimized()) return {};  // nothing visible; keep the last frame for read_back
     const glm::ivec2 fb = window->framebuffer_size();
-    if (swapchain_dirty || window->consume_resized() || static_cast<uint32_t>(fb.x) != swapchain.extent.width ||
-        static_cast<uint32_t>(fb.y) != swapchain.extent.height) {
-      if (auto r = recreate_swapchain(); !r) return r;
+    if (swapchain_dirty || window->consume_resized() || static_cast<uint32_t>(fb.x) != extent.width ||
+        static_cast<uint32_t>(fb.y) != extent.height) {
+      if (auto r = recreate_window_targets(); !r) return r;
       if (swapchain_dirty) return {};
     }
   }
@@ -199,7 +200,7 @@ eng::Result<void> Renderer::Impl::render(const FrameDesc& frame) {
   ENG_VK_TRY(vkWaitForFences(ctx->device, 1, &f.fence, VK_TRUE, UINT64_MAX), "vkWaitForFences");
 
   int swap_image = -1;
-  if (window) {
+  if (window && !shm) {
     uint32_t idx = 0;
     const VkResult r = vkAcquireNextImageKHR(ctx->device, swapchain.handle, UINT64_MAX, f.image_ready, VK_NULL_HANDLE, &idx);
     if (r == VK_ERROR_OUT_OF_DATE_KHR) {
@@ -210,6 +211,7 @@ eng::Result<void> Renderer::Impl::render(const FrameDesc& frame) {
     if (r == VK_SUBOPTIMAL_KHR) swapchain_dirty = true;
     swap_image = static_cast<int>(idx);
   }
+  if (shm && shm_pending == static_cast<int>(frame_index)) show_shm_pending();  // never overwrite an unshown frame
   if (auto r = upload_frame(f, frame); !r) return r;
   record(f, frame, swap_image);
   vkResetFences(ctx->device, 1, &f.fence);
@@ -218,7 +220,7 @@ eng::Result<void> Renderer::Impl::render(const FrameDesc& frame) {
   const VkPipelineStageFlags wait_stage = VK_PIPELINE_STAGE_TRANSFER_BIT;  // only the final blit touches the image
   si.commandBufferCount = 1;
   si.pCommandBuffers = &f.cmd;
-  if (window) {
+  if (swap_image >= 0) {
     si.waitSemaphoreCount = 1;
     si.pWaitSemaphores = &f.image_ready;
     si.pWaitDstStageMask = &wait_stage;
@@ -227,9 +229,14 @@ eng::Result<void> Renderer::Impl::render(const FrameDesc& frame) {
   }
   ENG_VK_TRY(vkQueueSubmit(ctx->queue, 1, &si, f.fence), "vkQueueSubmit");
   have_frame = true;
+  const int slot = static_cast<int>(frame_index);
   frame_index = (frame_index + 1) % static_cast<uint32_t>(frames.size());
 
-  if (window) {
+  if (shm) {
+    // The previous frame is shown while the rasteriser draws this one (it finished before this one started).
+    show_shm_pending();
+    shm_pending = slot;
+  } else if (window) {
     const uint32_t idx = static_cast<uint32_t>(swap_image);
     VkPresentInfoKHR pi{VK_STRUCTURE_TYPE_PRESENT_INFO_KHR};
     pi.waitSemaphoreCount = 1;
@@ -276,6 +283,18 @@ eng::Result<std::unique_ptr<Renderer>> Renderer::create_windowed(const RendererC
   auto ctx = VkContext::create(cc);
   if (!ctx) return eng::make_error(ctx.error());
   impl->ctx = std::move(*ctx);
+  using P = RendererConfig::Present;
+  const bool cpu = impl->ctx->props.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+  if (cfg.present == P::SharedMemory || (cfg.present == P::Auto && cpu)) {
+    const glm::ivec2 fb = window.framebuffer_size();
+    auto s = platform::ShmSurface::create(window, std::max(fb.x, 1), std::max(fb.y, 1));
+    if (s) impl->shm = std::move(*s);
+    else if (cfg.present == P::SharedMemory) return eng::make_error(s.error() + ": use --present swapchain");
+  }
+  if (impl->shm) {
+    if (auto r = impl->init(); !r) return eng::make_error(r.error());
+    return std::unique_ptr<Renderer>(new Renderer(std::move(impl)));
+  }
   auto surface = window.create_surface(impl->ctx->instance);
   if (!surface) return eng::make_error(surface.error());
   impl->surface = *surface;
@@ -320,6 +339,9 @@ MeshId Renderer::upload_mesh(const MeshData& mesh) {
 eng::Result<void> Renderer::render(const FrameDesc& frame) { return impl_->render(frame); }
 
 std::string Renderer::device_name() const { return impl_->ctx->device_name; }
+const char* Renderer::present_path() const {
+  return impl_->shm ? "shared memory" : impl_->window ? "swapchain" : "none";
+}
 eng::ui::Ui& Renderer::ui() { return impl_->ui; }
 std::string Renderer::driver_info() const { return impl_->ctx->driver_info; }
 int Renderer::validation_errors() const { return impl_->ctx->log->errors; }

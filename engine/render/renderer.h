@@ -33,6 +33,11 @@ struct RendererConfig {
   // texels cost lavapipe about 6 ms a frame; the 5x5 filter's penumbra doubles to about 3 cm, a few pixels at the
   // game's camera), 2048 on a GPU. Any other value is clamped to [256, 8192].
   int shadow_map_size = 0;
+  // How a window shows its frames. Auto: on a CPU rasteriser through X11 shared memory when the server allows it
+  // (platform::ShmSurface: lavapipe's own X11 path sends every frame through the socket on servers without DRI3,
+  // Xvfb and VNC among them, 15 ms a 1280x720 frame), else the Vulkan swapchain. SharedMemory fails if unavailable.
+  enum class Present { Auto, Swapchain, SharedMemory };
+  Present present = Present::Auto;
 };
 
 // A CPU rasteriser's scene pixel budget (render_scale 0): dynamic resolution as consoles do, by pixel count.
@@ -49,7 +54,9 @@ class Renderer {
   // Uploads once; the returned id is valid for the renderer's lifetime.
   MeshId upload_mesh(const MeshData& mesh);
   // Headless: renders and waits. Windowed: renders and presents (skips drawing while minimised; recreates the
-  // swapchain after a resize).
+  // swapchain after a resize). Through shared memory a frame is shown at the next call, once the following one is
+  // submitted, so the CPU rasteriser draws it while the caller simulates the next (one frame of latency, as a
+  // swapchain with two frames in flight has).
   eng::Result<void> render(const FrameDesc& frame);
   // The last rendered frame as RGBA8 (sRGB-encoded, alpha 255), top row first. Works in both modes.
   eng::Result<eng::Image> read_back();
@@ -59,6 +66,8 @@ class Renderer {
   eng::ui::Ui& ui();
 
   std::string device_name() const;
+  // "swapchain", "shared memory" or "none" (headless): how frames reach the window.
+  const char* present_path() const;
   std::string driver_info() const;
   int validation_errors() const;
   int validation_warnings() const;

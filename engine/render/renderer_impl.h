@@ -3,6 +3,7 @@
 #include <memory>
 #include <vector>
 #include <glm/glm.hpp>
+#include "engine/platform/shm_surface.h"
 #include "engine/platform/window.h"
 #include "engine/render/overlay.h"
 #include "engine/render/pipelines.h"
@@ -39,6 +40,7 @@ struct PerFrame {
   VkFence fence = VK_NULL_HANDLE;
   VkSemaphore image_ready = VK_NULL_HANDLE;
   Buffer uniforms, instances, lines, points;
+  Buffer present_copy;  // shared-memory present: the finished frame (RGBA) copied out for the CPU
   VkDescriptorSet set = VK_NULL_HANDLE;
 };
 
@@ -49,6 +51,8 @@ struct Renderer::Impl {
   VkSurfaceKHR surface = VK_NULL_HANDLE;
   Swapchain swapchain;
   bool swapchain_dirty = false;
+  std::unique_ptr<platform::ShmSurface> shm;  // set when the window is shown through shared memory (no swapchain)
+  int shm_pending = -1;                       // the frame slot submitted and not yet shown, -1 if none
 
   VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
   Pipelines pipes;
@@ -86,7 +90,11 @@ struct Renderer::Impl {
   eng::Result<void> init();
   eng::Result<void> create_targets(VkExtent2D size);
   void destroy_targets();
+  // Windowed: the swapchain or the shared-memory surface and the offscreen targets at the window's size.
+  eng::Result<void> recreate_window_targets();
   eng::Result<void> recreate_swapchain();
+  eng::Result<void> recreate_shm_surface();
+  void show_shm_pending();  // waits for the pending frame and copies it to the window (present_blit.cpp)
   // Makes `b` hold at least `size` bytes (host-visible, mapped), reallocating geometrically; sets *reallocated when
   // the buffer was replaced, so anything referring to it (descriptor sets) can be updated.
   eng::Result<void> ensure(Buffer& b, VkDeviceSize size, VkBufferUsageFlags usage, bool* reallocated = nullptr);
@@ -101,6 +109,7 @@ struct Renderer::Impl {
   void record_overlay_pass(VkCommandBuffer cmd);             // renderer.cpp
   void record_present_blit(VkCommandBuffer cmd, int swap_image);                     // present_blit.cpp
   void record_upscale(VkCommandBuffer cmd);                                          // present_blit.cpp
+  void record_shm_copy(VkCommandBuffer cmd, PerFrame& f);                            // present_blit.cpp
   bool scaled() const { return scene_extent.width != extent.width || scene_extent.height != extent.height; }
   // One instanced draw per run of equal meshes in the mesh-sorted opaque list (shared by shadow + scene).
   void draw_opaque(VkCommandBuffer cmd, const FrameDesc& frame);

@@ -158,3 +158,19 @@ TEST(Cli, RenderScaleIsAutoByDefaultAndTakesAShareFromAQuarterToOne) {
     EXPECT_NE(bad.error().find("--render-scale must be auto or a number from 0.25 to 1"), std::string::npos) << bad.error();
   }
 }
+
+TEST(Cli, PresentIsAutoByDefaultAndTakesSwapchainOrShm) {
+  auto d = boxing::parse_cli({});
+  ASSERT_TRUE(d.ok());
+  EXPECT_EQ(d->present, "auto");
+  for (const char* v : {"auto", "swapchain", "shm"}) {
+    auto o = boxing::parse_cli({"--present", v});
+    ASSERT_TRUE(o.ok()) << o.error();
+    EXPECT_EQ(o->present, v);
+  }
+  for (const char* v : {"", "x11", "SHM"}) {
+    auto bad = boxing::parse_cli({"--present", v});
+    ASSERT_FALSE(bad.ok()) << v;
+    EXPECT_NE(bad.error().find("--present must be auto, swapchain or shm"), std::string::npos) << bad.error();
+  }
+}
