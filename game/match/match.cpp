@@ -158,12 +158,18 @@ void resolve_landing(World& w, int attacker) {
 // of the ribs), in the bone's frame (+X forward, +Y left, +Z up); the one the guard covers least along the punch's
 // approach is chosen: straight punches come from the striking shoulder, hooks from the side of the striking hand at the
 // target's height, uppercuts from below. Clearance = the least distance between the approach line and the opponent's
-// gloves and forearms (spheres of their capsules' radii; two along each forearm), ties broken by the seeded AI. A punch
-// can still be blocked: the guard moves while it flies, and a tight guard leaves no opening.
-double choose_opening(World& w, int k, const Clip& c, bool body) {
+// gloves and forearms (spheres of their capsules' radii; two along each forearm), near ties broken by `jitter` (the
+// seeded AI's; null: none). A punch can still be blocked: the guard moves while it flies, and a tight guard leaves no
+// opening. Pure: the caller keeps the aim (track_punches).
+struct Opening {
+  double clear = -1e9;  // m, the approach's distance to the nearest part of the guard
+  int bone = -1;
+  Eigen::Vector3d local = Eigen::Vector3d::Zero(), dir_local = Eigen::Vector3d::UnitX();
+};
+
+Opening best_opening(const World& w, int k, const Clip& c, bool body, Rng* jitter) {
   const Boxer& b = w.boxers[k];
   const Boxer& o = w.boxers[1 - k];
-  MatchFighter& f = w.match.fighter[k];
   const auto& skel = w.boxer_desc.skeleton;
   const MatchBones& mb = w.match.bones;
   const int bone = body ? mb.chest : mb.head;
@@ -196,7 +202,7 @@ double choose_opening(World& w, int k, const Clip& c, bool body) {
   }
   const auto& xt = w.data.x[o.bodies.body[bone]];
   const Eigen::Vector3d centre = w.boxer_desc.bones[bone].com;
-  double best = -1e9;
+  Opening best;
   for (int i = 0; i < n; ++i) {
     const Eigen::Vector3d p = xt.p + xt.R * (centre + cand[i]);
     Eigen::Vector3d from = shoulder;
@@ -208,10 +214,10 @@ double choose_opening(World& w, int k, const Clip& c, bool body) {
       const double s = std::clamp((guard[g] - from).dot(d) / d.squaredNorm(), 0.0, 1.0);
       clear = std::min(clear, (from + s * d - guard[g]).norm() - radius[g]);
     }
-    clear += 0.01 * f.ai.rng.uniform();
-    if (clear > best) {
-      best = clear, f.aim_bone = bone, f.aim_local = centre + cand[i];
-      f.aim_dir_local = xt.R.transpose() * d.normalized();  // the approach, kept in the target's frame
+    if (jitter) clear += 0.01 * jitter->uniform();
+    if (clear > best.clear) {
+      best.clear = clear, best.bone = bone, best.local = centre + cand[i];
+      best.dir_local = xt.R.transpose() * d.normalized();  // the approach, kept in the target's frame
     }
   }
   return best;
@@ -239,13 +245,12 @@ void track_punches(World& w, const char* started[2]) {
     e.punch = c.name;
     // The AI reads the guard: a head the guard covers (no opening wider than switch_to_body_below along the
     // punch's approach) sends the punch to the body if the body is more open there (the player's aim is kept).
-    const double head_clear = choose_opening(w, k, c, f.ai.aim_body);
-    if (!f.player && !f.ai.aim_body && head_clear < mt.tuning.switch_to_body_below) {
-      const int bone = f.aim_bone;
-      const Eigen::Vector3d local = f.aim_local, dir = f.aim_dir_local;
-      if (choose_opening(w, k, c, true) > head_clear) f.ai.aim_body = true;
-      else f.aim_bone = bone, f.aim_local = local, f.aim_dir_local = dir;
+    Opening aim = best_opening(w, k, c, f.ai.aim_body, &f.ai.rng);
+    if (!f.player && !f.ai.aim_body && aim.clear < mt.tuning.switch_to_body_below) {
+      const Opening body = best_opening(w, k, c, true, &f.ai.rng);
+      if (body.clear > aim.clear) f.ai.aim_body = true, aim = body;
     }
+    f.aim_bone = aim.bone, f.aim_local = aim.local, f.aim_dir_local = aim.dir_local;
     e.target = f.ai.aim_body ? "torso" : "head";
     f.open_punch = static_cast<int>(mt.events.size());
     mt.events.push_back(std::move(e));

@@ -113,7 +113,7 @@ struct MatchFighter {
   int getup = -1;                // getups index of the current knockdown
   const char* saw_punch = nullptr;  // the other boxer started this punch on the last tick (for the AI)
   // The punch's target: a point fixed to the opponent's head or chest (bone frame), the opening chosen at the punch's
-  // start (choose_opening) and followed as the opponent moves.
+  // start (best_opening) and followed as the opponent moves.
   int aim_bone = -1;
   Eigen::Vector3d aim_local = Eigen::Vector3d::Zero();
   Eigen::Vector3d aim_dir_local = Eigen::Vector3d::UnitX();  // the punch's approach direction (same frame)
