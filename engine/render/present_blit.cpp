@@ -3,7 +3,6 @@
 // copies it out to the CPU and into the window's shared image.
 #include "engine/render/renderer_impl.h"
 
-#include <cstring>
 
 namespace eng::render {
 
@@ -62,23 +61,6 @@ void Renderer::Impl::record_upscale(VkCommandBuffer cmd) {
   vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT,
                        VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, 0, 0, nullptr, 0,
                        nullptr, 1, &b);
-}
-
-// Shared-memory present: the finished frame to this slot's host buffer, visible to the CPU at the fence.
-void Renderer::Impl::record_shm_copy(VkCommandBuffer cmd, PerFrame& f) {
-  VkBufferImageCopy copy{};
-  copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-  copy.imageExtent = {extent.width, extent.height, 1};
-  // The overlay pass (or the scene pass, or the upscale) left `resolved` in TRANSFER_SRC with its writes visible
-  // to transfers.
-  vkCmdCopyImageToBuffer(cmd, resolved.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, f.present_copy.buffer, 1, &copy);
-  VkBufferMemoryBarrier b{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER};
-  b.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-  b.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-  b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-  b.buffer = f.present_copy.buffer;
-  b.size = VK_WHOLE_SIZE;
-  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 0, nullptr, 1, &b, 0, nullptr);
 }
 
 void Renderer::Impl::show_shm_pending() {

@@ -165,7 +165,7 @@ void Renderer::Impl::record(PerFrame& f, const FrameDesc& frame, int swap_image)
   if (scaled()) record_upscale(cmd);
   if (frame.overlay) record_overlay_pass(cmd);
   if (swap_image >= 0) record_present_blit(cmd, swap_image);
-  if (shm) record_shm_copy(cmd, f);
+  if (shm) record_copy_to_host(cmd, f.present_copy);  // shown at the next render() (show_shm_pending)
   vkEndCommandBuffer(cmd);
 }
 

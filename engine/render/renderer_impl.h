@@ -109,7 +109,7 @@ struct Renderer::Impl {
   void record_overlay_pass(VkCommandBuffer cmd);             // renderer.cpp
   void record_present_blit(VkCommandBuffer cmd, int swap_image);                     // present_blit.cpp
   void record_upscale(VkCommandBuffer cmd);                                          // present_blit.cpp
-  void record_shm_copy(VkCommandBuffer cmd, PerFrame& f);                            // present_blit.cpp
+  void record_copy_to_host(VkCommandBuffer cmd, const Buffer& dst);                  // readback.cpp
   bool scaled() const { return scene_extent.width != extent.width || scene_extent.height != extent.height; }
   // One instanced draw per run of equal meshes in the mesh-sorted opaque list (shared by shadow + scene).
   void draw_opaque(VkCommandBuffer cmd, const FrameDesc& frame);
