@@ -40,6 +40,11 @@ const char* servo_space_name(ServoSpace s) {
   return "?";
 }
 
+void boxer_joint_speed_limits(eng::physics::Model& m, const Boxer& b) {
+  const bool limp = b.ctl.state.fallen() || b.ctl.state.state == BoxerState::GettingUp;
+  for (int body : b.bodies.body) m.bodies[body].max_speed = limp ? kLimpJointMaxSpeed : 0.0;
+}
+
 void place_desired_pose(const eng::assets::CharacterDesc& desc, const Arena& arena, const Boxer& b,
                         eng::anim::PoseSample& out) {
   // Place the clip (authored facing +X on a flat floor at z = 0) on the stance: rotate by the heading, lift onto

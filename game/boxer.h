@@ -165,6 +165,13 @@ void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const en
 // step and once before the first): b.ctl.contacts.
 void boxer_sense_contacts(const eng::physics::Data& d, Boxer& b);
 
+// A boxer's joints get the engine's soft speed limit (eng::physics::Body::max_speed, kLimpJointMaxSpeed) while it
+// falls, lies or gets up, none while it stands. Why: a limp arm flung by a strong drag whipped at 84 rad/s (gloves
+// over 30 m/s, the chaos soak, issue 19); standing, the elbows of our punches and blocks reach 60-86 rad/s (a 60 s
+X
+inline constexpr double kLimpJointMaxSpeed = 30.0;  // rad/s
+void boxer_joint_speed_limits(eng::physics::Model& m, const Boxer& b);
+
 // After a physics step: the metrics (upright time, com speed, tracking error, trace), then the state machine (a
 // fall: Guard -> Down), which the metrics then record.
 void boxer_measure(const eng::physics::Model& m, const eng::physics::Data& d, const eng::assets::CharacterDesc& desc,

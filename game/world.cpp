@@ -266,6 +266,7 @@ void step_world(World& w) {
   chaos_begin_step(w);        // --chaos: maybe a random event, through the same path as the player's
   interaction_begin_step(w);  // input events due now: throws set coordinates, so before the step's first half
   eng::physics::clear_applied(w.data);
+  for (Boxer& b : w.boxers) boxer_joint_speed_limits(w.model, b);  // read by step1's mass matrix
   // The step's first half (kinematics, contacts, rows, the mass matrix and c(q, v)) once, for the physics and for
   // every boxer's control: the balance QPs read their blocks of d.M_crba and d.qfrc_bias (MuJoCo's mj_step1 /
   // mj_step2 split). Control then writes torques, spring references and forces for the second half.

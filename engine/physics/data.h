@@ -133,6 +133,7 @@ struct Data {
   MatX LD;         // LTDL factor of M (RBDA 6.5): strict lower L, diagonal D
   VecX bias;       // after step1: = qfrc_bias; after step2: c including the applied forces (what was used)
   VecX vtmp, vtmp2, v_free, passive;
+  VecX speed_damping;  // per DoF: the soft speed limit's implicit damping this step (Body::max_speed; 0 below it)
   // constraint rows: J sparse (only ancestor DoFs of the two bodies are nonzero; an index may repeat
   // when the bodies share ancestors), M^-1 J^T dense over each row's [j_begin, j_end) (packed; capacity
   // max_rows x nv)

@@ -145,6 +145,7 @@ Data make_data(const Model& m) {
   d.vtmp2 = VecX::Zero(m.nv);
   d.v_free = VecX::Zero(m.nv);
   d.passive = VecX::Zero(m.nv);
+  d.speed_damping = VecX::Zero(m.nv);
   int limit_rows = 0;
   for (int i = 1; i < nb; ++i) {
     const Body& b = m.bodies[i];

@@ -48,6 +48,13 @@ struct Body {
   bool limited = false;          // hinge range
   double lower = 0.0, upper = 0.0;              // hinge limits (rad)
   double swing_limit = 0.0, twist_limit = 0.0;  // ball limits (rad), 0 = none; twist about body Z
+  // Soft joint speed limit (rad/s; 0 = none). Past it the joint gets the implicit damping that brings its rate (a
+  // ball: its angular velocity's norm) back to max_speed within the step when nothing else acts (step.h,
+  // mass_matrix): D = M_kk / dt (|v| / max_speed - 1) on each of its DoFs, M_kk the DoF's diagonal of M. A passive
+  // damper, so the contact solve sees it (a clamp after the solve pushed feet through the floor) and it only takes
+  // energy. As PhysX's articulation maxJointVelocity or Jolt's max angular velocity: a guard that keeps a limb from
+  // whipping faster than a body can (a limp arm flung by a strong drag), nothing a controller should meet.
+  double max_speed = 0.0;
   // filled by Model::finalize()
   int q_index = 0, v_index = 0, nq = 0, nv = 0;
   int root = 0;  // articulation root body (child of the world); 0 for the world itself

@@ -299,7 +299,8 @@ void passive_forces(const Model& m, Data& d) {
   const double h = m.dt;
   for (size_t i = 1; i < m.bodies.size(); ++i) {
     const Body& b = m.bodies[i];
-    for (int k = 0; k < b.nv; ++k) d.passive[b.v_index + k] = -b.damping * d.v[b.v_index + k];
+    for (int k = 0; k < b.nv; ++k)
+      d.passive[b.v_index + k] = -(b.damping + d.speed_damping[b.v_index + k]) * d.v[b.v_index + k];
     if (b.stiffness > 0) {
       if (b.joint == JointType::Hinge) {
         const double e = d.q[b.q_index] - d.spring_ref[b.v_index];
@@ -330,6 +331,16 @@ void mass_matrix(const Model& m, Data& d) {
     const Body& b = m.bodies[i];
     const double add = b.armature + h * b.damping + h * h * b.stiffness;
     for (int k = 0; k < b.nv; ++k) d.M(b.v_index + k, b.v_index + k) += add;
+    // The soft speed limit (Body::max_speed): for one DoF of inertia M_kk alone, (M_kk + h D) v+ = M_kk v gives
+    // |v+| = max_speed exactly with D = M_kk / h (|v| / max_speed - 1).
+    if (b.max_speed <= 0.0 || (b.joint != JointType::Hinge && b.joint != JointType::Ball)) continue;
+    const double s = d.v.segment(b.v_index, b.nv).norm();
+    for (int k = 0; k < b.nv; ++k) {
+      const int j = b.v_index + k;
+      const double D = s > b.max_speed ? d.M_crba(j, j) / h * (s / b.max_speed - 1.0) : 0.0;
+      d.speed_damping[j] = D;
+      d.M(j, j) += h * D;
+    }
   }
   factor_ltdl(m, d.M, d.LD);
 }

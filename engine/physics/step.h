@@ -90,11 +90,12 @@ void begin_contacts(Data& d);  // d.prev_contacts <- d.contacts (for warm start)
 // contact with the same (geom_a, geom_b, feature). Returns false when max_contacts is reached.
 bool add_contact(const Model& m, Data& d, const ContactPoint& cp);
 void compute_constraints(const Model& m, Data& d);  // rows, J, bias and soft params
-// step1: d.M_crba = crba(); d.M = M_crba + armature + dt D + dt^2 K; d.LD = factor_ltdl(d.M)
+// step1: d.M_crba = crba(); d.speed_damping (Body::max_speed); d.M = M_crba + armature + dt (D + speed damping)
+// + dt^2 K; d.LD = factor_ltdl(d.M)
 void mass_matrix(const Model& m, Data& d);
 // step1: d.qfrc_bias = rigid_bias_forces() (no applied forces); d.bias = d.qfrc_bias
 void compute_bias(const Model& m, Data& d);
-void passive_forces(const Model& m, Data& d);       // d.passive = -D v - K (q + dt v)
+void passive_forces(const Model& m, Data& d);       // d.passive = -(D + speed damping) v - K (q + dt v)
 // step2: d.bias = c with the current applied forces; v_free = v + dt M^-1 (tau + passive - bias); qacc
 void unconstrained_velocity(const Model& m, Data& d);
 void forward_dynamics(const Model& m, Data& d);     // mass_matrix + compute_bias + unconstrained_velocity

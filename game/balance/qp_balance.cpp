@@ -167,6 +167,7 @@ void actuate(QpBalance& q, BalanceTick& tick) {
     const ph::Vec6 h = ph::spatial_momentum(m, d, pelvis);
     const Eigen::Vector3d k_com = h.head<3>() - com_a.cross(h.tail<3>());
     in.momentum_rate = -tq.momentum_damping * k_com;
+    if (in.momentum_rate.norm() > tq.max_momentum_rate) in.momentum_rate *= tq.max_momentum_rate / in.momentum_rate.norm();
   } else {
     in.com_acc = m.gravity;  // airborne: nothing to plan with
   }
@@ -263,7 +264,8 @@ void actuate(QpBalance& q, BalanceTick& tick) {
     params.w_force *= tq.balance_step_com_scale;
     params.w_moment *= tq.balance_step_com_scale;
   }
-  if (int(in.contacts.size()) < tq.min_support_contacts && !first_tick) {
+  const bool unsupported = int(in.contacts.size()) < tq.min_support_contacts && !first_tick;
+  if (unsupported) {
     params.w_force *= tq.few_contacts_task_scale;
     params.w_moment *= tq.few_contacts_task_scale;
   }
@@ -275,13 +277,23 @@ void actuate(QpBalance& q, BalanceTick& tick) {
   // The root rows: the root assist's generalised force (zero when it is off).
   for (int k = 0; k < in.dof_end - in.dof_begin; ++k) d.tau[in.dof_begin + k] = finite ? q.out.tau[k] : 0.0;
   // Strength: each joint's torque within tq.joint_torque_limit (a ball joint's as a vector), a guard. Standing,
-  // walking and fighting never reach it (largest seen in 60 s matches: 292 N m at a hip, 262 at a shoulder).
+  // walking and fighting never reach it (largest seen in 60 s matches: 292 N m at a hip, 262 at a shoulder). While the
+  // boxer is losing its balance, the torque-velocity limit too (tq.speed_strength): there the plan, short of the
+  // ground reaction its com and momentum targets need, spun the arms as reaction wheels (gloves at 31-51 m/s in the
+  // chaos soak). Standing it stays off: the elbows of punches and blocks reach 60-86 rad/s, and the limit on every
+  // joint at every tick made 4 falls without a hit in the match sweep (docs/decisions/joint-speed.md).
+  // Losing its balance: no support polygon, or the pelvis tilted past tq.losing_balance_tilt from where the pose wants it.
+  const Eigen::Vector3d up = d.x[pelvis].R * (b.ctl.servo.W_d[0].toRotationMatrix().transpose() * Eigen::Vector3d::UnitZ());
+  // (Not while a balance step swings: the step's leg must move fast; limited, seed 2's step after a 400 N push from
+  // behind came too late.)
+  const bool losing_balance = (unsupported || up.z() < std::cos(tq.losing_balance_tilt)) && !b.ctl.balance_steps.step.active;
   for (int bone = 1; bone < int(b.bodies.body.size()); ++bone) {
     const eng::physics::Body& body = m.bodies[b.bodies.body[bone]];
     if (body.nv == 0) continue;
     auto t = d.tau.segment(body.v_index, body.nv);
     const double n = t.norm();
     if (n > tq.joint_torque_limit) t *= tq.joint_torque_limit / n;
+    if (losing_balance) eng::control::limit_torque_by_speed(t, d.v.segment(body.v_index, body.nv), tq.speed_strength);
   }
   b.ctl.root_torque = finite ? q.out.root_assist : Eigen::Vector3d::Zero();
 }

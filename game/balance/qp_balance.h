@@ -4,9 +4,11 @@
 // feet toward their steps), the root spring as the QP's root assist. One of the two balance controllers
 // (balance_controller.h).
 #include <Eigen/Core>
+#include <cmath>
 #include <vector>
 
 #include "engine/control/balance/balance_qp.h"
+#include "engine/control/servo/joint_strength.h"
 #include "engine/core/latency_histogram.h"
 
 namespace boxing {
@@ -17,7 +19,11 @@ struct BalanceTick;
 // Tuning (read every tick). Measurements: docs/decisions/balance-qp-tuning.md.
 struct BalanceQpTuning {
   double com_omega = 6.0;             // rad/s, com PD natural frequency (critically damped)
-  double momentum_damping = 4.0;      // 1/s, angular momentum about the com damped toward zero
+  double momentum_damping = 4.0;      // 1/s, angular momentum about the com damped toward zero ...
+  // ... at a rate of at most this (N m). A boxer yanked by a strong drag or tumbling carries 50+ kg m^2/s; damping it
+  // at 4 /s asked the arms, the only links free to give it, for hundreds of N m: they whipped at 60-120 rad/s (gloves
+  // 30-38 m/s, the chaos soak). Standing and fighting it never binds (the match sweep is the same bit for bit).
+  double max_momentum_rate = 200.0;
   double mu = 0.6;                    // friction used in the plan (the crates and soles have 0.9: a margin)
   double planted_foot_weight = 50.0;  // kg m^2, a touching foot's orientation task (little effect 1-500)
   double touch_gap = 0.002;           // m, a contact closer than this carries load in the plan
@@ -33,6 +39,11 @@ struct BalanceQpTuning {
   double max_com_acc = 6.0;           // m/s^2, the desired com acceleration's bound
   double stance_drop = 0.04;          // m, the desired root this much below the clip's (knees bent deeper)
   double joint_torque_limit = 500.0;  // N m per joint (vector norm): a guard, never reached in play
+  // While the boxer is losing its balance (fewer than min_support_contacts, or the pelvis tilted more than
+  // losing_balance_tilt from the desired), each joint's strength falls with its speed (joint_strength.h, Hill): full
+  // to 20 rad/s, none driving it past 30. A plan that spun the arms as reaction wheels no longer can.
+  eng::control::TorqueVelocityLimit speed_strength{20.0, 30.0};
+  double losing_balance_tilt = 30.0 * M_PI / 180.0;  // rad
   int min_support_contacts = 3;       // fewer contact points in the plan: no support polygon ...
   double few_contacts_task_scale = 1e-2;  // ... and the com / momentum tasks priced this much lower
 };

@@ -5,6 +5,7 @@
 
 #include "engine/anim/motion_graph.h"
 #include "engine/control/servo/person_space.h"
+#include "engine/physics/dynamics.h"
 #include "game/character_builder.h"
 #include "game/match/punch_aim.h"
 #include "game/world.h"
@@ -22,6 +23,8 @@ constexpr double kAimThrough = 0.2;
 // m: a straight punch's glove centre ahead of the chest at full extension (measured from the desired pose at the
 // jab's impact frame: 0.74 m).
 constexpr double kReach = 0.74;
+// m: a boxer set back on its mark is lifted when a body sinks deeper than this into the crates under it.
+constexpr double kResetClearance = 0.03;
 
 const Clip* clip_of(const World& w, const Boxer& b) {
   const eng::anim::GraphWalker* walker = b.source.walker();
@@ -102,6 +105,35 @@ void pass_through_opponent(World& w, int k, bool on) {
       w.model.geoms[g].mask = on ? ~other_group : 0xffffffffu;
 }
 
+// How far the boxer's lowest geom point is below the crate top (or the floor) under it (m; < 0: all clear), for the
+// pose in w.data.q: every box corner and the bottom of every capsule cap and sphere, against Arena::top_at there.
+double deepest_below_crates(World& w, const Boxer& b) {
+  eng::physics::forward_kinematics(w.model, w.data);
+  double deepest = -1e9;
+  auto below = [&](const Eigen::Vector3d& p) { deepest = std::max(deepest, w.arena.top_at(p.x(), p.y()) - p.z()); };
+  for (size_t i = 0; i < b.bodies.first_geom.size(); ++i)
+    for (int g = b.bodies.first_geom[i]; g < b.bodies.first_geom[i] + b.bodies.geom_count[i]; ++g) {
+      const auto& G = w.model.geoms[g];
+      const eng::physics::Pose x = w.data.x[G.body] * G.local;
+      const auto& sh = G.shape;
+      switch (sh.type) {
+        case eng::physics::ShapeType::Box:
+          for (int k = 0; k < 8; ++k) {
+            const Eigen::Vector3d c((k & 1 ? 1 : -1) * sh.half_extents.x(), (k & 2 ? 1 : -1) * sh.half_extents.y(),
+                                    (k & 4 ? 1 : -1) * sh.half_extents.z());
+            below(x.apply(c));
+          }
+          break;
+        case eng::physics::ShapeType::Capsule:
+          for (int k = -1; k <= 1; k += 2) below(x.apply(Eigen::Vector3d(0, 0, k * sh.half_length)) - sh.radius * Eigen::Vector3d::UnitZ());
+          break;
+        case eng::physics::ShapeType::Sphere: below(x.p - sh.radius * Eigen::Vector3d::UnitZ()); break;
+        case eng::physics::ShapeType::Plane: break;
+      }
+    }
+  return deepest;
+}
+
 // The referee brings both boxers back to their marks once the downed one is up (a reset, as a fighting game's next
 // exchange: the boxers' steps do not carry them, arena.h, and a fall and get-up leave a boxer up to 0.8 m off its
 // mark, out of reach). Each body is set on its desired pose moved onto its mark, at rest; controllers start over.
@@ -115,15 +147,15 @@ void back_to_marks(World& w, int only = -1) {
     const Eigen::Vector2d shift = b.ctl.mark - b.desired.pose.root_position.head<2>();
     b.ctl.anchor += shift;
     b.desired.pose.root_position.head<2>() += shift;
-    // Up on the floor off the platform (knocked off it), the pose stood 0.3 m lower than its mark's crates: lifted
-    // onto them (else the feet were set inside the crates and the body stayed wedged there).
-    bool off_platform = true;
-    for (int k = 0; k < 2; ++k) {
-      const Eigen::Vector3d& p = w.data.x[b.bodies.body[b.bones.foot[k]]].p;
-      off_platform = off_platform && w.arena.top_at(p.x(), p.y()) == 0.0;
-    }
-    if (off_platform) b.desired.pose.root_position.z() += std::min(b.stance.lead_top, b.stance.rear_top);
     set_character_pose(w.model, w.data, b.bodies, w.boxer_desc, b.desired.pose.root_position, b.desired.pose.rotation);
+    // The pose was placed on the crates where the boxer got up (or on the floor, knocked off the platform): at its
+    // mark it can stand lower than the crates there, its feet set inside them, and a body that starts inside a
+    // crate stays wedged in it (the chaos soak, issue 19). Lifted until nothing is below the tops under it.
+    const double sunk = deepest_below_crates(w, b);
+    if (sunk > kResetClearance) {
+      b.desired.pose.root_position.z() += sunk;
+      set_character_pose(w.model, w.data, b.bodies, w.boxer_desc, b.desired.pose.root_position, b.desired.pose.rotation);
+    }
     b.ctl.have_support_base = false;
     for (auto& s : b.ctl.step) s.active = false;
     for (auto& g : b.ctl.gate) g = {};
@@ -344,7 +376,9 @@ void referee(World& w) {
     const double speed = body_velocity_at(w, pelvis, w.data.x[pelvis].p).norm();
     if (s.state == BoxerState::Down) {
       f.still = speed < tu.still_speed ? f.still + dt : 0.0;
-      if (f.still >= tu.still_time && t - g.down_at >= tu.min_down_time && !mt.over) {
+      // (Also after a knock-out: the beaten boxer comes round and stands, the fight does not go on; the chaos soak's
+      // falls after it end in get-ups too.)
+      if (f.still >= tu.still_time && t - g.down_at >= tu.min_down_time) {
         // Lying on the back: the chest's front (+X of the bone) looks up.
         const int chest = mt.bones.chest;
         const Eigen::Vector3d front = w.data.x[b.bodies.body[chest >= 0 ? chest : 0]].R * Eigen::Vector3d::UnitX();

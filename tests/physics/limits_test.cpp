@@ -68,3 +68,85 @@ TEST(Limits, BallTwistLimitHolds) {
   EXPECT_GT(tmax, 0.45);
   EXPECT_LT(tmax, 0.5 + 0.015);
 }
+
+// The soft speed limit (Body::max_speed): for a lone hinge with no gravity, the implicit damping D = M / dt
+// (|v| / max_speed - 1) makes (M + dt D) v+ = M v give |v+| = max_speed exactly, in one step.
+TEST(SpeedLimit, BringsAFreeSpinningHingeToItsLimitInOneStep) {
+  Model m;
+  m.gravity.setZero();
+  Body b = make_body("arm", 0, JointType::Hinge, at({0, 0, 1}), 2.0, {0.5, 0, 0}, rod_inertia_z(2.0, 1.0),
+                     Vec3::UnitY());
+  b.max_speed = 30.0;
+  m.add_body(b);
+  m.finalize();
+  Data d = make_data(m);
+  d.v[0] = -100.0;
+  step(m, d);
+  EXPECT_NEAR(d.v[0], -30.0, 1e-9);
+  step(m, d);  // at the limit: no damping from it
+  EXPECT_NEAR(d.v[0], -30.0, 1e-9);
+  EXPECT_EQ(d.speed_damping[0], 0.0);
+}
+
+// Below the limit the joint evolves bit for bit as one without a limit (the damping is exactly zero there).
+TEST(SpeedLimit, BelowTheLimitChangesNothing) {
+  auto run = [](double max_speed) {
+    Model m;
+    Body b = make_body("arm", 0, JointType::Ball, at({0, 0, 1}), 2.0, {0.5, 0, 0}, rod_inertia_z(2.0, 1.0));
+    b.max_speed = max_speed;
+    m.add_body(b);
+    m.finalize();
+    Data d = make_data(m);
+    d.v << 1.0, -2.0, 0.5;
+    for (int i = 0; i < 240; ++i) step(m, d);
+    return d.q;
+  };
+  const VecX limited = run(50.0), free = run(0.0);  // a swinging rod stays under 10 rad/s
+  for (int i = 0; i < limited.size(); ++i) EXPECT_EQ(limited[i], free[i]);
+}
+
+// A ball joint keeps the direction of its angular velocity; only its magnitude comes down, and only energy leaves.
+TEST(SpeedLimit, SlowsABallJointAlongItsAxisAndOnlyTakesEnergy) {
+  Model m;
+  m.gravity.setZero();
+  Body b = make_body("arm", 0, JointType::Ball, at({0, 0, 1}), 2.0, {0, 0, -0.4}, rod_inertia_z(2.0, 0.8, 0.05));
+  b.max_speed = 20.0;
+  m.add_body(b);
+  m.finalize();
+  Data d = make_data(m);
+  d.v << 0.0, 0.0, 60.0;  // spinning about the rod's own axis (a principal axis: constant without the limit)
+  const double e0 = 0.5 * d.v.dot(m.bodies[1].inertia * d.v);
+  step(m, d);
+  EXPECT_NEAR(d.v[2], 20.0, 1e-6);
+  EXPECT_NEAR(d.v.head<2>().norm(), 0.0, 1e-9);
+  EXPECT_LT(0.5 * d.v.dot(m.bodies[1].inertia * d.v), e0);
+}
+
+// The damper is part of the unconstrained dynamics, so the contact solve sees it: a limb driven down onto the floor
+// by a huge torque, far past its speed limit, is still held by the floor, and comes to rest on it.
+TEST(SpeedLimit, AFloorStillHoldsALimbDrivenIntoItPastTheLimit) {
+  Model m;
+  Geom floor;
+  floor.shape.type = ShapeType::Plane;
+  m.add_geom(floor);
+  Body b = make_body("arm", 0, JointType::Hinge, at({0, 0, 0.3}), 2.0, {0.5, 0, 0}, rod_inertia_z(2.0, 1.0),
+                     Vec3::UnitY());
+  b.max_speed = 5.0;
+  const int arm = m.add_body(b);
+  Geom tip;
+  tip.shape.type = ShapeType::Sphere;
+  tip.shape.radius = 0.05;
+  tip.body = arm;
+  tip.local.p = Vec3(1.0, 0, 0);
+  m.add_geom(tip);
+  m.finalize();
+  Data d = make_data(m);
+  double lowest = 1.0;
+  while (d.time < 2.0) {
+    d.tau[0] = 2000.0;  // positive about +Y lowers +X: the tip pressed into the floor
+    step(m, d);
+    lowest = std::min(lowest, 0.3 - std::sin(d.q[0]) * 1.0 - 0.05);
+  }
+  EXPECT_GT(lowest, -0.02);  // the sphere's bottom at most 2 cm into the floor
+  EXPECT_LT(std::abs(d.v[0]), 0.1);
+}
