@@ -122,7 +122,7 @@ struct MatchFighter {
 // The boxer's bones the match reads every tick, resolved by name once (match_setup).
 struct MatchBones {
   int head = -1, chest = -1;
-  int glove[2] = {-1, -1}, forearm[2] = {-1, -1};  // [0] left, [1] right
+  int glove[2] = {-1, -1}, forearm[2] = {-1, -1}, upper_arm[2] = {-1, -1};  // [0] left, [1] right
 };
 
 struct Match {
@@ -149,6 +149,8 @@ void match_before_control(World& w);
 void match_after_step(World& w);
 // The player's command for boxer k, queued (the boxer becomes the player's from now on).
 void match_command(World& w, int k, FightCommand c);
+// Boxer k's straight punch reaches the other's head (the AI's "in range"; both out of it is the referee's "apart").
+bool in_range(const World& w, int k);
 
 // What the match panel shows now (game/hud.h).
 MatchHud match_hud(const World& w);
