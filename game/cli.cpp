@@ -74,6 +74,7 @@ flags:
   --push-force N         push scenario: force in newtons
   --push-duration S      push scenario: duration (default 0.1)
   --push-at S            push scenario: start time (default 2)
+  --push-shape pulse|sine push scenario: constant force (default), or FORCE * sin(2 pi (t - start)) (Kudoh's sine)
   --round-seconds S      match: a round's length (default 180)
   --player 0|1           match: the keyboard steers that boxer, the AI the other (default: both AI)
   --input FILE.json      play timed input events: drags, throws, pushes, fight keys, settings (README: Scripted input)
@@ -250,6 +251,11 @@ eng::Result<Options> parse_cli(const std::vector<std::string>& args) {
       else if (flag == "--push-force") o.push_force = x;
       else if (flag == "--push-duration") o.push_duration = x;
       else o.push_at = x;
+    } else if (flag == "--push-shape") {
+      auto v = value();
+      if (!v) return missing();
+      if (*v != "pulse" && *v != "sine") return bad("--push-shape must be pulse or sine, got '" + *v + "'");
+      o.push_sine = *v == "sine";
     } else if (flag == "--servo-wn" || flag == "--servo-zeta") {
       auto v = value();
       if (!v) return missing();

@@ -43,6 +43,7 @@ struct Options {
   double push_force = 0.0;
   double push_duration = 0.1;
   double push_at = 2.0;
+  bool push_sine = false;              // --push-shape sine: push_force * sin(2 pi (t - push_at)) N (Kudoh's Fig. 3.3)
   std::string drill_clip;              // stand / push: play this clip once every drill_every seconds (else guard)
   double drill_every = 3.0;
   // servo gains: ONE pair for the whole body (per joint K = I omega_n^2, D = 2 zeta I omega_n; world.cpp)

@@ -57,6 +57,10 @@ struct World {
   } profile;
   bool profile_stages = true;  // off: step1 / step2 / boxer_control read no clock (a few hundred ns a tick)
   bool push_active = false;
+  // The push scenario's time series at 120 Hz (the report's push.trace, Kudoh's Figs. 3.1-3.4): t, com and centre of
+  // pressure in the stance's heading frame about its mark (the pelvis between the feet; x forward, y left), both upper arms'
+  // swing (rad, forward from hanging, in the sagittal plane).
+  std::vector<std::array<double, 7>> push_trace;
   Match match;  // the match scenario's fight (game/match/match.h); inactive elsewhere
   Interaction interaction;  // the player's hands: drags, thrown objects, scripted and recorded input
   Chaos chaos;              // --chaos: seeded random input events

@@ -5,6 +5,7 @@
 // used to floor person space (its rear crate is 12 cm lower than the lead one).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 
 #include "game/cli.h"
@@ -37,6 +38,44 @@ TEST_P(PushFromEveryDirection, A150NewtonChestPushIsSurvivedWithNoRootHelp) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Servo, PushFromEveryDirection, ::testing::Values("world", "person"));
+
+// The push scenario's trace (Kudoh's plots): standing in guard the centre of pressure lies under the com on average
+// (the ground's force balances the weight through the com), and Kudoh's sinusoidal push from the front moves the
+// centre of pressure back and forth at the push's 1 Hz. Checks the trace's com, its centre of pressure (summed from
+// the solver's contact forces) and the --push-shape sine force.
+TEST(Push, TheTraceHasTheCentreOfPressureUnderTheComAndFollowsKudohsSine) {
+  auto o = boxing::parse_cli({"--scenario", "push", "--seed", "1", "--stepping", "off", "--push-dir", "180",
+                              "--push-force", "100", "--push-shape", "sine", "--push-duration", "5", "--push-at", "2"});
+  ASSERT_TRUE(o.ok()) << o.error();
+  auto w = boxing::make_world(*o);
+  ASSERT_TRUE(w.ok()) << w.error();
+  boxing::World& world = **w;
+  for (int i = 0; i < int(5.0 / boxing::kPhysicsDt); ++i) boxing::step_world(world);
+  const auto& tr = world.push_trace;
+  ASSERT_GT(tr.size(), 590u);  // 120 Hz
+  // Standing before the push, over two periods of the guard's 0.6 s bounce (the centre of pressure sways +-4 cm about
+  // the com as the balance drives it; on average it is under it).
+  double dx = 0, dy = 0;
+  int n = 0;
+  for (const auto& r : tr)
+    if (r[0] >= 0.8 && r[0] < 2.0) dx += r[3] - r[1], dy += r[4] - r[2], ++n;
+  ASSERT_GT(n, 100);
+  EXPECT_LT(std::abs(dx / n), 0.015);
+  EXPECT_LT(std::abs(dy / n), 0.015);
+  // Under the sine (a push backward in the first half of each second, forward in the second) the centre of pressure
+  // moves back and forth: its mean over the seconds' first halves differs from the second halves' by > 1 cm.
+  double half[2] = {0, 0};
+  int cnt[2] = {0, 0};
+  for (const auto& r : tr) {
+    if (r[0] < 2.0) continue;
+    const int h = std::fmod(r[0] - 2.0, 1.0) < 0.5 ? 0 : 1;
+    half[h] += r[3], ++cnt[h];
+  }
+  ASSERT_GT(cnt[0], 100);
+  ASSERT_GT(cnt[1], 100);
+  EXPECT_GT(std::abs(half[0] / cnt[0] - half[1] / cnt[1]), 0.01);
+  EXPECT_FALSE(world.boxers[0].metrics.fell);
+}
 
 TEST(Push, SixTimesThatImpulseFloorsTheBoxer) {
   // The same scenario is not a pass by construction: 900 N x 0.1 s (90 kg m/s) from behind knocks the boxer down in

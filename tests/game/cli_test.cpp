@@ -22,7 +22,7 @@ TEST(Cli, ParsesEveryValueFlag) {
   auto o = parse_cli({"--headless", "--width", "640", "--height=360", "--seconds", "2.5", "--seed", "42",
                       "--scenario", "push", "--screenshot", "a.png", "--report", "r.json", "--servo",
                       "parent-meathook", "--push-dir", "90", "--push-force", "150", "--push-duration", "0.1",
-                      "--push-at", "3", "--camera", "closeup", "--ghost", "--render-every", "30", "--root-spring",
+                      "--push-at", "3", "--push-shape", "sine", "--camera", "closeup", "--ghost", "--render-every", "30", "--root-spring",
                       "on", "--root-spring-max", "80"});
   ASSERT_TRUE(o.ok()) << o.error();
   EXPECT_TRUE(o->headless);
@@ -37,6 +37,7 @@ TEST(Cli, ParsesEveryValueFlag) {
   EXPECT_DOUBLE_EQ(o->push_dir_deg, 90.0);
   EXPECT_DOUBLE_EQ(o->push_force, 150.0);
   EXPECT_DOUBLE_EQ(o->push_at, 3.0);
+  EXPECT_TRUE(o->push_sine);
   EXPECT_EQ(o->camera, "closeup");
   EXPECT_TRUE(o->ghost);
   EXPECT_EQ(o->render_every, 30);
@@ -74,6 +75,7 @@ TEST(Cli, RejectsBadFlagsAndValuesWithOneLine) {
       {{"--dot", "g.dot"}, "--dot"},
       {{"--root-spring", "maybe"}, "--root-spring"},
       {{"--root-spring-max", "-5"}, "--root-spring-max"},
+      {{"--push-shape", "square"}, "--push-shape"},
   };
   for (const BadCase& c : cases) {
     auto o = parse_cli(c.args);
