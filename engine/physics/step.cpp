@@ -332,12 +332,13 @@ void mass_matrix(const Model& m, Data& d) {
     const double add = b.armature + h * b.damping + h * h * b.stiffness;
     for (int k = 0; k < b.nv; ++k) d.M(b.v_index + k, b.v_index + k) += add;
     // The soft speed limit (Body::max_speed): for one DoF of inertia M_kk alone, (M_kk + h D) v+ = M_kk v gives
-    // |v+| = max_speed exactly with D = M_kk / h (|v| / max_speed - 1).
-    if (b.max_speed <= 0.0 || (b.joint != JointType::Hinge && b.joint != JointType::Ball)) continue;
-    const double s = d.v.segment(b.v_index, b.nv).norm();
+    // |v+| = max_speed exactly with D = M_kk / h (|v| / max_speed - 1). Written every step, 0 where there is no
+    // limit: a limit turned off while the joint was past it leaves no stale damping in passive_forces.
+    const bool capped = b.max_speed > 0.0 && (b.joint == JointType::Hinge || b.joint == JointType::Ball);
+    const double s = capped ? d.v.segment(b.v_index, b.nv).norm() : 0.0;
     for (int k = 0; k < b.nv; ++k) {
       const int j = b.v_index + k;
-      const double D = s > b.max_speed ? d.M_crba(j, j) / h * (s / b.max_speed - 1.0) : 0.0;
+      const double D = capped && s > b.max_speed ? d.M_crba(j, j) / h * (s / b.max_speed - 1.0) : 0.0;
       d.speed_damping[j] = D;
       d.M(j, j) += h * D;
     }

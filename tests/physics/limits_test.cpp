@@ -88,6 +88,27 @@ TEST(SpeedLimit, BringsAFreeSpinningHingeToItsLimitInOneStep) {
   EXPECT_EQ(d.speed_damping[0], 0.0);
 }
 
+// A limit turned off while the joint is past it leaves nothing behind: the next step is a free spin (the game turns
+// the limit off as a boxer stands up).
+TEST(SpeedLimit, TurnedOffPastTheLimitLeavesNoDamping) {
+  Model m;
+  m.gravity.setZero();
+  Body b = make_body("arm", 0, JointType::Hinge, at({0, 0, 1}), 2.0, {0.5, 0, 0}, rod_inertia_z(2.0, 1.0),
+                     Vec3::UnitY());
+  b.max_speed = 30.0;
+  m.add_body(b);
+  m.finalize();
+  Data d = make_data(m);
+  d.v[0] = -100.0;
+  step(m, d);
+  ASSERT_GT(d.speed_damping[0], 0.0);  // the step was limited
+  d.v[0] = -100.0;
+  m.bodies[1].max_speed = 0.0;
+  step(m, d);
+  EXPECT_EQ(d.speed_damping[0], 0.0);
+  EXPECT_NEAR(d.v[0], -100.0, 1e-9);
+}
+
 // Below the limit the joint evolves bit for bit as one without a limit (the damping is exactly zero there).
 TEST(SpeedLimit, BelowTheLimitChangesNothing) {
   auto run = [](double max_speed) {
