@@ -89,6 +89,9 @@ struct BoxerControlState {
   eng::control::LiftGate gate[2];
   eng::control::BalanceStepState balance_steps;  // balance QP: the balance's own steps (balance_step.h)
   eng::control::CartPoleLqr step_lqr;            // StepPlacement::InvertedPendulumLqr's gain (solved at setup)
+  // The player's hands (or the chaos soak's) hold or push one of its bodies until this time (s; step_world): the
+  // balance QP's Kudoh priorities stay off meanwhile (qp_balance.h BalanceQpTuning::trunk_weight).
+  double handled_until = -1.0;
   double support_base = 0.0;  // balance QP: the clip's floor height under the actual feet (low-passed)
   bool have_support_base = false;
   double person_heading = 0.0;  // person space: low-passed pelvis heading (boxer_control)

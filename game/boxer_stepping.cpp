@@ -22,11 +22,26 @@ void update_support_base(const eng::physics::Data& d, const Arena& arena, Boxer&
   // (StanceTuning::base_tau) so a swing foot passing over another crate does not jerk the desired root up or down. The stance's
   // crates only hold until the first step: after one the root was placed for crates the feet had left (a leg
   // over-stretched above a lower crate, or crouched on a higher one).
+  // A touching foot whose centre reads a top more than kSeamDrop below its sole stands across a seam between crates
+  // (12 mm wide; Arena::top_at reads the floor there): its top is the highest under its heel, toe and the centre's
+  // sides. Read at the centre alone, the base sank to 0 and a boxer up from a knockdown with a foot across a seam
+  // held a squat 0.28 m low, never counted up (a 54 s stand-up, match seed 9 in a sweep of AI variants).
+  constexpr double kSeamDrop = 0.05;  // m
+  const auto& ft = b.settings.tuning.foot;
   double lowest = 1e9;
-  for (int f : b.bones.foot) {
-    const int fb = b.bodies.body[f];
-    const Eigen::Vector3d c = d.x[fb].p + d.x[fb].R * b.settings.tuning.foot.centre;
-    lowest = std::min(lowest, arena.top_at(c.x(), c.y()));
+  for (int k = 0; k < 2; ++k) {
+    const int fb = b.bodies.body[b.bones.foot[k]];
+    const Eigen::Vector3d c = d.x[fb].p + d.x[fb].R * ft.centre;
+    double top = arena.top_at(c.x(), c.y());
+    const double sole = std::min((d.x[fb].p + d.x[fb].R * ft.heel).z(), (d.x[fb].p + d.x[fb].R * ft.toe).z());
+    if (b.ctl.contacts.support[k] && top < sole - kSeamDrop) {
+      const Eigen::Vector3d side(0.0, 0.04, 0.0);
+      for (const Eigen::Vector3d& at : {ft.heel, ft.toe, Eigen::Vector3d(ft.centre + side), Eigen::Vector3d(ft.centre - side)}) {
+        const Eigen::Vector3d q = d.x[fb].p + d.x[fb].R * at;
+        top = std::max(top, arena.top_at(q.x(), q.y()));
+      }
+    }
+    lowest = std::min(lowest, top);
   }
   if (!b.ctl.have_support_base) b.ctl.support_base = std::min(b.stance.lead_top, b.stance.rear_top), b.ctl.have_support_base = true;
   b.ctl.support_base += (1.0 - std::exp(-dt / b.settings.tuning.stance.base_tau)) * (lowest - b.ctl.support_base);

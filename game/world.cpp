@@ -144,6 +144,10 @@ void configure_boxer_control(World& w, Boxer& b) {
     q->params.w_root_assist = b.settings.root_params.enabled ? b.settings.tuning.root.assist_price : 0.0;
     q->params.max_root_assist = b.settings.root_params.max_torque;
     q->params.w_torque = b.settings.root_params.enabled ? b.settings.tuning.root.qp_torque_price : 0.0;
+    const auto& skel = w.boxer_desc.skeleton;
+    q->trunk.assign(skel.size(), 0);
+    for (int i = 0; i < skel.size(); ++i)
+      q->trunk[i] = i == 0 || skel.name[i] == "abdomen" || skel.name[i] == "chest" || skel.name[i] == "neck" || skel.name[i] == "head";
   }
   setup_implicit_servo(w, b);
 }
@@ -259,6 +263,25 @@ eng::Result<std::unique_ptr<World>> make_world(const Options& o) {
   return w;
 }
 
+namespace {
+// Boxers the hands hold, push or hit with a thrown object now are handled for another kHandledHold seconds (BoxerControlState::handled_until).
+constexpr double kHandledHold = 2.0;
+void mark_handled_boxers(World& w) {
+  const Interaction& in = w.interaction;
+  auto mark = [&w](int body) {
+    if (body < 0 || body >= int(w.interaction.owners.size())) return;
+    const int k = w.interaction.owners[body].boxer;
+    if (k >= 0 && k < int(w.boxers.size())) w.boxers[k].ctl.handled_until = w.data.time + kHandledHold;
+  };
+  for (const HeldDrag& h : in.drags)
+    if (h.active) mark(h.body);
+  for (const ActivePush& p : in.pushes) mark(p.body);
+  // A thrown object's hit (the last step's, recorded after it) hands the boxer over to the plain priorities too.
+  for (auto h = in.object_hits.rbegin(); h != in.object_hits.rend() && h->t >= w.data.time - kPhysicsDt; ++h)
+    if (h->boxer >= 0 && h->boxer < int(w.boxers.size())) w.boxers[h->boxer].ctl.handled_until = w.data.time + kHandledHold;
+}
+}  // namespace
+
 void step_world(World& w) {
   using clock = std::chrono::steady_clock;
   auto ms = [](clock::time_point a, clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
@@ -276,6 +299,7 @@ void step_world(World& w) {
   const auto t1 = clock::now();
   const ScenarioHooks& scenario = scenario_hooks(w.options.scenario_id);
   if (scenario.before_control) scenario.before_control(w);
+  mark_handled_boxers(w);
   for (Boxer& b : w.boxers) boxer_control(w.model, w.data, w.boxer_desc, w.arena, b, kPhysicsDt, control_stages);
 
   // The scenario's forces (the push scenario's chest push).

@@ -179,6 +179,14 @@ void actuate(QpBalance& q, BalanceTick& tick) {
   const PunchAim& aim = b.ctl.aim;
   const int aim_forearm = aim.active && aim.glove > 0 ? skel.parent[aim.glove] : -1;
   const int aim_upper = aim_forearm > 0 ? skel.parent[aim_forearm] : -1;
+  // Kudoh's priorities (BalanceQpTuning::trunk_weight, com_weight) while the boxer stands on its support: not
+  // while the player's hands hold or push it (BoxerControlState::handled_until), not during a balance step (the step's swing needs the com task low and the trunk free to lean) nor on fewer than
+  // min_support_contacts points or tilted past losing_balance_tilt (dragged, tumbling: held to a trunk posture and a
+  // com the ground cannot give, the plan whipped the arms to 36-40 m/s in the chaos soak).
+  const Eigen::Vector3d up_now = d.x[pelvis].R * (b.ctl.servo.W_d[0].toRotationMatrix().transpose() * Eigen::Vector3d::UnitZ());
+  const bool kudoh = !b.ctl.balance_steps.step.active && d.time >= b.ctl.handled_until && (first_tick || int(in.contacts.size()) >= tq.min_support_contacts) &&
+                     up_now.z() >= std::cos(tq.losing_balance_tilt);
+  const double trunk_price = kudoh ? tq.trunk_weight : 1.0;
   for (int i = 0; i < n; ++i) {
     eng::control::QpAngularTask t;
     t.body = b.bodies.body[i];
@@ -186,7 +194,7 @@ void actuate(QpBalance& q, BalanceTick& tick) {
     const double g = arm ? aim.arm_gain : 1.0;
     t.alpha = g * g * kp * eng::control::orientation_error(b.ctl.servo.W_d[i], b.scratch.W_a[i]) +
               g * kd * (b.ctl.servo.omega_d[i] - b.scratch.omega_a[i]);
-    t.weight = b.control_body.I_eff[i] * (arm ? g * g : 1.0);
+    t.weight = b.control_body.I_eff[i] * (arm ? g * g : 1.0) * (q.trunk.size() > size_t(i) && q.trunk[i] ? trunk_price : 1.0);
     in.angular.push_back(t);
   }
   // The punch's strike: the glove's centre driven along a velocity field into the target (PunchAim::strike).
@@ -258,6 +266,7 @@ void actuate(QpBalance& q, BalanceTick& tick) {
   // plan mostly tracks the pose. (Standing, walking and fighting: a few ticks a minute, one foot's edge.)
   eng::control::BalanceQpParams& params = q.solve_params;
   params = q.params;
+  if (kudoh) params.w_force *= tq.com_weight, params.w_moment *= tq.com_weight;
   // During a balance step's swing the com and momentum tasks are priced lower: held to the stance foot's support they
   // threw the upper body against the fall the step is there to catch (docs/decisions/balance-steps.md).
   if (b.ctl.balance_steps.step.active && !b.ctl.balance_steps.step.returning) {
@@ -286,7 +295,10 @@ void actuate(QpBalance& q, BalanceTick& tick) {
   const Eigen::Vector3d up = d.x[pelvis].R * (b.ctl.servo.W_d[0].toRotationMatrix().transpose() * Eigen::Vector3d::UnitZ());
   // (Not while a balance step swings: the step's leg must move fast; limited, seed 2's step after a 400 N push from
   // behind came too late.)
-  const bool losing_balance = (unsupported || up.z() < std::cos(tq.losing_balance_tilt)) && !b.ctl.balance_steps.step.active;
+  // Handled by the player's hands too (BoxerControlState::handled_until): a boxer dropped by a strong drag of its
+  // thigh, still upright and on its feet when let go, swung an arm to 34 m/s as it fell (the chaos soak's match).
+  const bool handled = d.time < b.ctl.handled_until;
+  const bool losing_balance = (unsupported || handled || up.z() < std::cos(tq.losing_balance_tilt)) && !b.ctl.balance_steps.step.active;
   for (int bone = 1; bone < int(b.bodies.body.size()); ++bone) {
     const eng::physics::Body& body = m.bodies[b.bodies.body[bone]];
     if (body.nv == 0) continue;

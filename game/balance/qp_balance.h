@@ -5,6 +5,7 @@
 // (balance_controller.h).
 #include <Eigen/Core>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 #include "engine/control/balance/balance_qp.h"
@@ -37,6 +38,16 @@ struct BalanceQpTuning {
   double balance_step_speed = 4.5;    // m/s, its feed-forward velocity bound
   double balance_step_com_scale = 0.1;  // the com / momentum tasks' price during its swing (1: fewer pushes survived)
   double max_com_acc = 6.0;           // m/s^2, the desired com acceleration's bound
+  // Kudoh's priorities (qp-balance-kudoh-thesis section 3: the trunk's posture held above the com's place): the
+  // trunk's orientation tasks (pelvis, abdomen, chest, neck, head) priced trunk_weight times a limb's per unit of
+  // inertia, the com / momentum tasks com_weight times the engine's unit price, while the boxer stands on its support
+  // (actuate). The match's boxers fight with 100 / 30 (match_setup): at 1 / 1 the com task outweighed the trunk, a
+  // boxer rocked by a hit or by its own blocked punch folded at the waist and fell, fought on stunned and landed 6-10
+  // a match. Off (1 / 1) elsewhere: on, balance steps after 400 N from behind fell (3 of 3), a head dragged sideways
+  // floored the boxer after release and the chaos soak's drags whipped limbs to 32-45 m/s. Measured in
+  // docs/decisions/match-fight.md and docs/decisions/balance-steps.md.
+  double trunk_weight = 1.0;
+  double com_weight = 1.0;
   double stance_drop = 0.04;          // m, the desired root this much below the clip's (knees bent deeper)
   double joint_torque_limit = 500.0;  // N m per joint (vector norm): a guard, never reached in play
   // While the boxer is losing its balance (fewer than min_support_contacts, or the pelvis tilted more than
@@ -52,6 +63,7 @@ struct BalanceQpTuning {
 struct QpBalance {
   eng::control::BalanceQpInput in;
   eng::control::BalanceQpParams params;  // prices and the root assist's limit (world.cpp, per tick the limit)
+  std::vector<uint8_t> trunk;            // per bone: 1 for the trunk's (BalanceQpTuning::trunk_weight; world.cpp)
   eng::control::BalanceQp ws;
   eng::control::BalanceQpResult out;
   long ticks = 0;

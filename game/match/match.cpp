@@ -291,6 +291,8 @@ void track_punches(World& w, const char* started[2]) {
       if (body.clear > aim.clear) f.ai.aim_body = true, aim = body;
     }
     f.aim_bone = aim.bone, f.aim_local = aim.local, f.aim_dir_local = aim.dir_local;
+    e.opening = aim.clear;
+    e.consciousness = {b.ctl.root_spring.consciousness(), w.boxers[1 - k].ctl.root_spring.consciousness()};
     e.target = f.ai.aim_body ? "torso" : "head";
     f.open_punch = static_cast<int>(mt.events.size());
     mt.events.push_back(std::move(e));
@@ -496,6 +498,9 @@ void match_setup(World& w) {
     b.settings.root_params.knockout_threshold = 1e9;
     b.settings.root_params.stun_time = mt.tuning.recovery_delay;
     b.settings.root_params.recovery_rate = mt.tuning.recovery_rate;
+    // The fight's balance: Kudoh's priorities, the trunk held upright over the com (balance_qp.h BalanceQpTuning).
+    b.settings.tuning.qp.trunk_weight = mt.tuning.trunk_weight;
+    b.settings.tuning.qp.com_weight = mt.tuning.com_weight;
   }
 }
 
@@ -550,7 +555,9 @@ void match_before_control(World& w) {
     const double dist = reach_distance(w, k);
     const bool opponent_up = standing_state(o.ctl.state.state);  // no hitting a downed man
     v.in_range = dist < kInRange && opponent_up;
-    v.too_far = dist > kReach + 0.03 && opponent_up;
+    // A boxer just hit gathers itself before it steps in: the step's lean on legs still taking the hit floored
+    // boxers 1-1.5 s after a punch (3 of 4 falls without a hit, seeds 1-20).
+    v.too_far = dist > kReach + 0.03 && opponent_up && t - f.last_hit_at > mt.tuning.step_in_after_hit;
     v.too_close = dist < kReach - 0.25;
     v.other_started = f.saw_punch;
     v.slow = b.ctl.state.state == BoxerState::Stunned ? 0.4 : 1.0;
@@ -624,6 +631,8 @@ nlohmann::json match_report(const World& w) {
                       {"speed", e.speed},
                       {"fist_speed", e.fist_speed},
                       {"peak_speed", e.peak_speed},
+                      {"opening_m", e.opening},
+                      {"consciousness", e.consciousness},
                       {"impulse", e.impulse},
                       {"damage", e.damage}});
   nlohmann::json getups = nlohmann::json::array();
@@ -659,6 +668,12 @@ nlohmann::json match_report(const World& w) {
              return w.boxers[k].ctl.root_spring.consciousness();
            })},
           {"players", pair([](const MatchFighter& f) { return f.player; })},
+          {"styles", pair([](const MatchFighter& f) {
+             const FighterStyle& s = f.ai.style;
+             return nlohmann::json{{"attack_rate", s.attack_rate}, {"combo", s.combo}, {"defence", s.defence},
+                                   {"reaction_s", s.reaction_s}, {"body_share", s.body_share},
+                                   {"punch_weight", s.punch_weight}};
+           })},
           {"player_commands_taken", pair([](const MatchFighter& f) { return f.commands_taken; })},
           {"round_seconds", mt.round_seconds},
           {"resets_to_marks", mt.resets},

@@ -43,7 +43,10 @@ struct MatchTuning {
   double switch_to_body_below = 0.04;  // m: a head opening narrower than this sends an AI's punch to the body if wider there
   double land_speed = 2.0;         // m/s, a glove's approach speed on head / torso for a punch to count as landed
   double impact_window = 0.05;     // s, the contact impulse summed this long after the first touch
-  double head_damage_per_ns = 0.025;  // consciousness lost per N s of impulse on the head
+  // consciousness lost per N s of impulse on the head: a landed head punch (median 8 N s) takes 0.12, and a boxer up
+  // from a count (0.75) goes down again after about five. At 0.025 (0.2 a punch) one boxer was knocked down 6-10
+  // times a match, fought stunned most of the time and landed 6-10 (docs/decisions/match-fight.md).
+  double head_damage_per_ns = 0.015;
   double body_damage_per_ns = 0.01;   // ... on the torso
   double knockdown_damage = 0.35;     // one hit taking this much is a knockdown
   double knockdown_below = 0.15;     // consciousness below this after a hit is a knockdown
@@ -60,6 +63,10 @@ struct MatchTuning {
   double after_count = 0.75;         // consciousness at least this once up from a knockdown
   double neutral_corner_within = 1.6;  // m, pelvis to pelvis: at a get-up's start a standing opponent this close goes to its mark
   double apart_time = 2.0;           // s both out of reach before the referee brings them back to their marks
+  double step_in_after_hit = 2.0;    // s after a landed hit before the AI steps in (footwork) again
+  // The boxers' balance QP priorities in the fight (BalanceQpTuning::trunk_weight, com_weight; 1 / 1 elsewhere).
+  double trunk_weight = 100.0;
+  double com_weight = 30.0;
 };
 
 struct PunchEvent {
@@ -73,6 +80,8 @@ struct PunchEvent {
   double speed = 0.0;     // m/s, approach speed at the first touch (along the contact normal: what lands it)
   double fist_speed = 0.0;  // m/s, the glove's speed (its centre, world) at the first touch: the fist speed at contact
   double peak_speed = 0.0;  // m/s, the striking glove's fastest over the punch (world)
+  double opening = 0.0;   // m, the chosen opening's clearance at the punch's start (best_opening: < 0 covered)
+  std::array<double, 2> consciousness{};  // the thrower's and the opponent's at the punch's start
   double impulse = 0.0;   // N s over impact_window
   double damage = 0.0;
 };
