@@ -40,8 +40,8 @@ const char* servo_space_name(ServoSpace s) {
   return "?";
 }
 
-void boxer_joint_speed_limits(eng::physics::Model& m, const Boxer& b) {
-  const bool limp = b.ctl.state.fallen() || b.ctl.state.state == BoxerState::GettingUp;
+void boxer_joint_speed_limits(eng::physics::Model& m, const Boxer& b, double time) {
+  const bool limp = b.ctl.state.fallen() || b.ctl.state.state == BoxerState::GettingUp || time < b.ctl.handled_until;
   for (int body : b.bodies.body) m.bodies[body].max_speed = limp ? kLimpJointMaxSpeed : 0.0;
 }
 

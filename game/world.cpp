@@ -279,6 +279,18 @@ void mark_handled_boxers(World& w) {
   // A thrown object's hit (the last step's, recorded after it) hands the boxer over to the plain priorities too.
   for (auto h = in.object_hits.rbegin(); h != in.object_hits.rend() && h->t >= w.data.time - kPhysicsDt; ++h)
     if (h->boxer >= 0 && h->boxer < int(w.boxers.size())) w.boxers[h->boxer].ctl.handled_until = w.data.time + kHandledHold;
+  // The player's hands act through a handled boxer on whatever it touches: a boxer struck by the other one as it is
+  // dragged or thrown about is handled too (the chaos soak, match seed 9 at 224 s: struck by a dragged boxer falling on
+  // it, held to Kudoh's trunk priority, a standing boxer whipped an arm to 40 m/s).
+  for (const auto& c : w.data.prev_contacts) {
+    if (c.body_a == 0 || c.body_b == 0 || c.body_a >= int(in.owners.size()) || c.body_b >= int(in.owners.size())) continue;
+    const int ka = in.owners[c.body_a].boxer, kb = in.owners[c.body_b].boxer;
+    if (ka < 0 || kb < 0 || ka == kb || ka >= int(w.boxers.size()) || kb >= int(w.boxers.size())) continue;
+    double& ua = w.boxers[ka].ctl.handled_until;
+    double& ub = w.boxers[kb].ctl.handled_until;
+    if (w.data.time < ua) ub = std::max(ub, ua);
+    else if (w.data.time < ub) ua = std::max(ua, ub);
+  }
 }
 }  // namespace
 
@@ -289,7 +301,7 @@ void step_world(World& w) {
   chaos_begin_step(w);        // --chaos: maybe a random event, through the same path as the player's
   interaction_begin_step(w);  // input events due now: throws set coordinates, so before the step's first half
   eng::physics::clear_applied(w.data);
-  for (Boxer& b : w.boxers) boxer_joint_speed_limits(w.model, b);  // read by step1's mass matrix
+  for (Boxer& b : w.boxers) boxer_joint_speed_limits(w.model, b, w.data.time);  // read by step1's mass matrix
   // The step's first half (kinematics, contacts, rows, the mass matrix and c(q, v)) once, for the physics and for
   // every boxer's control: the balance QPs read their blocks of d.M_crba and d.qfrc_bias (MuJoCo's mj_step1 /
   // mj_step2 split). Control then writes torques, spring references and forces for the second half.

@@ -182,10 +182,13 @@ void actuate(QpBalance& q, BalanceTick& tick) {
   // Kudoh's priorities (BalanceQpTuning::trunk_weight, com_weight) while the boxer stands on its support: not
   // while the player's hands hold or push it (BoxerControlState::handled_until), not during a balance step (the step's swing needs the com task low and the trunk free to lean) nor on fewer than
   // min_support_contacts points or tilted past losing_balance_tilt (dragged, tumbling: held to a trunk posture and a
-  // com the ground cannot give, the plan whipped the arms to 36-40 m/s in the chaos soak).
-  const Eigen::Vector3d up_now = d.x[pelvis].R * (b.ctl.servo.W_d[0].toRotationMatrix().transpose() * Eigen::Vector3d::UnitZ());
+  // com the ground cannot give, the plan whipped the arms to 36-40 m/s in the chaos soak), and only in guard: a stunned
+  // boxer's bone tasks are 0.49 times weaker (its gains), the com task x30 outweighed them and the plan swung the arms
+  // (gloves at 31-41 m/s in 4 of 10 matches of the sweep, the chaos soak's 5 of 36 runs over 30 m/s).
+  // The pelvis's up axis against where the pose wants it (the tilt both gates below read).
+  const Eigen::Vector3d up = d.x[pelvis].R * (b.ctl.servo.W_d[0].toRotationMatrix().transpose() * Eigen::Vector3d::UnitZ());
   const bool kudoh = !b.ctl.balance_steps.step.active && d.time >= b.ctl.handled_until && (first_tick || int(in.contacts.size()) >= tq.min_support_contacts) &&
-                     up_now.z() >= std::cos(tq.losing_balance_tilt);
+                     up.z() >= std::cos(tq.losing_balance_tilt) && b.ctl.state.state == BoxerState::Guard;
   const double trunk_price = kudoh ? tq.trunk_weight : 1.0;
   for (int i = 0; i < n; ++i) {
     eng::control::QpAngularTask t;
@@ -292,7 +295,6 @@ void actuate(QpBalance& q, BalanceTick& tick) {
   // chaos soak). Standing it stays off: the elbows of punches and blocks reach 60-86 rad/s, and the limit on every
   // joint at every tick made 4 falls without a hit in the match sweep (docs/decisions/joint-speed.md).
   // Losing its balance: no support polygon, or the pelvis tilted past tq.losing_balance_tilt from where the pose wants it.
-  const Eigen::Vector3d up = d.x[pelvis].R * (b.ctl.servo.W_d[0].toRotationMatrix().transpose() * Eigen::Vector3d::UnitZ());
   // (Not while a balance step swings: the step's leg must move fast; limited, seed 2's step after a 400 N push from
   // behind came too late.)
   // Handled by the player's hands too (BoxerControlState::handled_until): a boxer dropped by a strong drag of its

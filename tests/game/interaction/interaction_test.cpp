@@ -313,3 +313,30 @@ TEST(Interaction, AGrabbedBallFollowsTheTargetAndClearLetsGoAndParksIt) {
   EXPECT_FALSE(w->interaction.objects[0].live);
   EXPECT_GT(w->data.com_world[ball].z(), 3.0);  // parked, away from the arena
 }
+
+// The player's hands act through a handled boxer on the other: boxer 1's chest dragged into boxer 0 in the match hands
+// boxer 0 over too (BoxerControlState::handled_until: Kudoh's priorities off, its joints under the soft speed limit,
+// world.cpp mark_handled_boxers) while they touch, though no hand was ever on boxer 0; before the drag neither is.
+TEST(Interaction, ABoxerStruckByADraggedBoxerIsHandledTooAndItsJointsAreSpeedLimited) {
+  auto w0 = make({"--scenario", "match", "--seed", "1"});
+  const Eigen::Vector3d p0 = w0->data.x[w0->boxers[0].bodies.body[0]].p, p1 = w0->data.x[w0->boxers[1].bodies.body[0]].p;
+  Eigen::Vector3d toward = p0 - p1;
+  toward.z() = 0.0;
+  auto w = make({"--scenario", "match", "--seed", "1"}, {drag(0.5, 1, "chest", 0.9 * toward.normalized(), 0.8, true)});
+  bool handled_before = false, handled_by_contact = false, limited = false;
+  while (w->data.time < 0.5 - 1e-9) {
+    boxing::step_world(*w);
+    handled_before = handled_before || w->data.time < w->boxers[0].ctl.handled_until || w->data.time < w->boxers[1].ctl.handled_until;
+  }
+  while (w->data.time < 1.5 && !handled_by_contact) {
+    boxing::step_world(*w);
+    handled_by_contact = w->data.time < w->boxers[0].ctl.handled_until;
+  }
+  if (handled_by_contact) {
+    boxing::step_world(*w);  // the limits are written before the next step's first half
+    limited = w->model.bodies[w->boxers[0].bodies.body[5]].max_speed == boxing::kLimpJointMaxSpeed;
+  }
+  EXPECT_FALSE(handled_before);
+  EXPECT_TRUE(handled_by_contact) << "boxer 1 dragged into boxer 0 for 0.8 s, boxer 0 never handled";
+  EXPECT_TRUE(limited);
+}

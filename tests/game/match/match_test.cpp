@@ -34,20 +34,27 @@ TEST(Match, PunchesLandOnlyThroughTheStrikingGloveOnHeadOrTorsoAtSpeed) {
   ASSERT_TRUE(w);
   const Match& m = w->match;
   int thrown[2] = {0, 0}, landed[2] = {0, 0};
-  for (const PunchEvent& e : m.events) {
+  for (size_t i = 0; i < m.events.size(); ++i) {
+    const PunchEvent& e = m.events[i];
     ++thrown[e.boxer];
+    const bool resolving = m.fighter[e.boxer].landing == int(i);  // its impact window still open at the end
     if (e.landed) {
       ++landed[e.boxer];
       EXPECT_TRUE(e.hit_part == "head" || e.hit_part == "torso") << e.punch << " at " << e.t;
       EXPECT_GE(e.speed, m.tuning.land_speed);
       EXPECT_GT(e.impulse, 0.0);
-      EXPECT_GT(e.damage, 0.0);
+      if (!resolving) EXPECT_GT(e.damage, 0.0) << e.punch << " at " << e.t;
       EXPECT_FALSE(e.blocked);
     }
     if (e.blocked) {
       EXPECT_TRUE(e.hit_part == "glove" || e.hit_part == "arm");
     }
-    if (e.t < w->data.time - 0.2) EXPECT_GT(e.peak_speed, 0.5);  // the glove moved (a punch, not a pose)
+    // The glove moved (a punch, not a pose), unless the other's punch landing as it started cut it short (the hit
+    // reaction is forced over it).
+    bool cut_short = false;
+    for (const PunchEvent& o : m.events)
+      cut_short = cut_short || (o.boxer != e.boxer && o.landed && o.t <= e.t && o.t > e.t - 0.6);
+    if (e.t < w->data.time - 0.2 && !cut_short) EXPECT_GT(e.peak_speed, 0.5) << e.punch << " at " << e.t;
   }
   for (int k = 0; k < 2; ++k) {
     EXPECT_EQ(m.fighter[k].thrown, thrown[k]);
