@@ -171,8 +171,9 @@ void boxer_sense_contacts(const eng::physics::Data& d, Boxer& b);
 // A boxer's joints get the engine's soft speed limit (eng::physics::Body::max_speed, kLimpJointMaxSpeed) while it
 // falls, lies or gets up, or is handled by the player's hands (BoxerControlState::handled_until: dragged, pushed,
 // struck by a thrown object or by the other boxer while that one is handled), none while it stands. Why: a limp arm
-// flung by a strong drag whipped at 84 rad/s (gloves over 30 m/s, the chaos soak, issue 19); standing, the elbows of our punches and blocks reach 60-86 rad/s (a 60 s
-// match, seed 3) and a 30 rad/s limit on every joint at all times slowed the landed punches from 7.2 to 6.0-6.2 m/s.
+// flung by a strong drag whipped at 84 rad/s (gloves over 30 m/s, the chaos soak, issue 19); standing, the elbows of
+// our punches and blocks reach 60-86 rad/s (a 60 s match, seed 3) and a 30 rad/s limit on every joint at all times
+// slowed the landed punches from 7.2 to 6.0-6.2 m/s.
 // Handled: a boxer yanked by a strong drag of its head, still on its feet, whipped a glove to 31 m/s (the chaos soak).
 inline constexpr double kLimpJointMaxSpeed = 30.0;  // rad/s
 void boxer_joint_speed_limits(eng::physics::Model& m, const Boxer& b, double time);
