@@ -19,7 +19,7 @@ TEST(MatchWindow, FightKeysThrowThePlayersPunches) {
   std::remove(report.c_str());
   // The game in the background; once its window is mapped, focus it and press the keys a second apart.
   const std::string cmd =
-      "(timeout 120 " + std::string(BOXING_BINARY_DIR) + "/boxing --scenario match --player 0 --seed 1 --seconds 8 --no-vsync " +
+      "(timeout 120 " + std::string(BOXING_BINARY_DIR) + "/boxing --scenario match --player 0 --seed 3 --seconds 8 --no-vsync " +
       "--width 640 --height 360 --report " + report + " >/dev/null 2>&1 &) ; "
       "win=$(timeout 60 xdotool search --sync --onlyvisible --name 'Boxing - match' | head -1) && "
       "timeout 10 xdotool windowfocus $win && sleep 1.5 && "
@@ -41,7 +41,8 @@ TEST(MatchWindow, FightKeysThrowThePlayersPunches) {
   for (const auto& e : m["events"])
     if (e["boxer"] == 0) (e["punch"] == "jab" ? jabs : crosses) += e["punch"] == "jab" || e["punch"] == "cross";
   // Of the three keyed punches at least two are thrown (a hit on the player's boxer between the key and the punch's
-  // start forces a reaction clip instead: the timing depends on the machine's load, the window's frames).
+  // start forces a reaction clip instead: the timing depends on the machine's load, the window's frames). Seed 3: the
+  // AI lands nothing on an idle player's boxer in the first 8 s (seed 1's jab at 1.7 s ate the first key under load).
   EXPECT_GE(jabs, 1) << m["events"].dump();
   EXPECT_GE(jabs + crosses, 2) << m["events"].dump();
 }
