@@ -43,6 +43,11 @@ struct BoxerMetrics {
   int balance_steps = 0, return_steps = 0;  // balance QP: steps the balance took (balance_step.h), steps back to the stance
   int most_steps_in_recovery = 0;           // the longest multi-step recovery
   double max_com_speed = 0.0;
+  // The upper arms against the pose the servo tracks (b.ctl.servo.W_d): time in guard with either more than
+  // kArmOffPose off (an arm left spread, or swung as a reaction wheel), and the larger error at the last sample.
+  static constexpr double kArmOffPose = 1.5;  // rad
+  double arm_off_guard_s = 0.0, arm_error_end = 0.0;
+  int upper_arm[2] = {-1, -1};  // the skeleton's upper arms (found on the first sample)
   // Root spring use (external torque on the pelvis, no reaction): sum of |tau|^2 dt, peak |tau|, time at its limit.
   double root_torque_sq_dt = 0.0, root_torque_peak = 0.0, root_saturated_time = 0.0;
   std::vector<double> err_sq_sum;  // per bone, world orientation tracking error^2 (rad^2)

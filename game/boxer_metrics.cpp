@@ -41,6 +41,19 @@ void boxer_measure(const eng::physics::Model& m, const eng::physics::Data& d, co
     mt.root_torque_peak = std::max(mt.root_torque_peak, t);
     if (b.settings.root_params.enabled && t >= 0.999 * b.settings.root_params.max_torque) mt.root_saturated_time += dt;
   }
+  if (!b.limp) {  // (a limp body has no servo pose)
+    if (mt.upper_arm[0] < 0)
+      for (int k = 0; k < 2; ++k) mt.upper_arm[k] = skel.find(k == 0 ? "upper_arm_l" : "upper_arm_r");
+    double worst = 0.0;
+    for (int k = 0; k < 2; ++k) {
+      const int i = mt.upper_arm[k];
+      if (i < 0 || size_t(i) >= b.ctl.servo.W_d.size()) continue;
+      const Eigen::Quaterniond Wa(d.x[b.bodies.body[i]].R);
+      worst = std::max(worst, eng::control::orientation_error(b.ctl.servo.W_d[i], Wa).norm());
+    }
+    mt.arm_error_end = worst;
+    if (b.ctl.state.state == BoxerState::Guard && worst > BoxerMetrics::kArmOffPose) mt.arm_off_guard_s += dt;
+  }
   const Eigen::Vector3d com = eng::physics::subtree_com(m, d, pelvis);
   if (mt.have_com) mt.max_com_speed = std::max(mt.max_com_speed, (com - mt.last_com).norm() / dt);
   mt.last_com = com;

@@ -403,6 +403,8 @@ nlohmann::json world_report(const World& w) {
                       {"fell_reason", m.fell_reason},
                       {"time_upright_s", m.time_upright},
                       {"max_com_speed", m.max_com_speed},
+                      {"arm_off_guard_s", m.arm_off_guard_s},
+                      {"arm_error_end_rad", m.arm_error_end},
                       {"root_spring",
                        {{"enabled", b.settings.root_params.enabled},
                         {"max_torque_nm", b.settings.root_params.max_torque},

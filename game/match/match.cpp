@@ -5,6 +5,7 @@
 
 #include "engine/anim/motion_graph.h"
 #include "engine/control/servo/person_space.h"
+#include "engine/control/servo/world_pose.h"
 #include "engine/physics/dynamics.h"
 #include "game/character_builder.h"
 #include "game/match/punch_aim.h"
@@ -146,15 +147,47 @@ void back_to_marks(World& w, int only = -1) {
     // Facing the opponent again: the walk's fall and get-up clips may have turned its root.
     const double turn = std::remainder(b.stance.heading - eng::control::heading_of(b.desired.pose.rotation[0]), 2.0 * M_PI);
     b.ctl.yaw_offset += turn;
-    b.desired.pose.rotation[0] = (Eigen::AngleAxisd(turn, Eigen::Vector3d::UnitZ()) * b.desired.pose.rotation[0]).normalized();
-    const Eigen::Vector2d shift = b.ctl.mark - b.desired.pose.root_position.head<2>();
-    b.ctl.anchor += shift;
-    b.desired.pose.root_position.head<2>() += shift;
+    b.ctl.have_support_base = false;  // placed on the stance's crates (place_desired_pose), not where it got up
+    if (const eng::anim::GraphWalker* walker = b.source.walker()) {
+      // The walk's pose placed afresh, as at the start (the clip's legs fitted to the crates), turned so that the line
+      // from the rear foot to the lead foot lies as it did at the start and moved so that the feet's midpoint is where
+      // it was: the start's stance on the same crates. Why: the desired pose's legs reach for the feet where the boxer
+      // got up; turned and moved with it they put seed 5's red down cross-legged, a foot 21 cm inside a crate (lifted
+      // out, it sank and fell 1 s later with no punch on it); and turned by the pelvis's heading and moved by the
+      // pelvis, seed 4's boxers stood with that line 25 deg off and each foot 10 cm from its start (the guard's pelvis
+      // turns and sways over its feet).
+      const Eigen::Vector3d mid0 = 0.5 * (b.metrics.foot0[0] + b.metrics.foot0[1]);
+      const Eigen::Vector3d line0 = b.metrics.foot0[0] - b.metrics.foot0[1];
+      for (int pass = 0; pass < 3; ++pass) {
+        b.desired.pose = walker->preview(0.0);
+        place_desired_pose(w.boxer_desc, w.arena, b, b.desired);
+        if (pass == 2) break;
+        eng::control::pose_fk(w.boxer_desc.skeleton, b.desired.pose, b.scratch.fk_W, b.scratch.fk_P);
+        const Eigen::Vector3d& lead = b.scratch.fk_P[b.bones.foot[0]];
+        const Eigen::Vector3d& rear = b.scratch.fk_P[b.bones.foot[1]];
+        if (pass == 0) {
+          const Eigen::Vector3d line = lead - rear;
+          b.ctl.yaw_offset += std::remainder(std::atan2(line0.y(), line0.x()) - std::atan2(line.y(), line.x()), 2.0 * M_PI);
+        } else {
+          b.ctl.anchor += (mid0 - 0.5 * (lead + rear)).head<2>();
+        }
+      }
+    } else {
+      b.desired.pose.rotation[0] = (Eigen::AngleAxisd(turn, Eigen::Vector3d::UnitZ()) * b.desired.pose.rotation[0]).normalized();
+      const Eigen::Vector2d shift = b.ctl.mark - b.desired.pose.root_position.head<2>();
+      b.ctl.anchor += shift;
+      b.desired.pose.root_position.head<2>() += shift;
+    }
     set_character_pose(w.model, w.data, b.bodies, w.boxer_desc, b.desired.pose.root_position, b.desired.pose.rotation);
     // The pose was placed on the crates where the boxer got up (or on the floor, knocked off the platform): at its
     // mark it can stand lower than the crates there, its feet set inside them, and a body that starts inside a
     // crate stays wedged in it (the chaos soak, issue 19). Lifted until nothing is below the tops under it.
-    const double sunk = deepest_below_crates(w, b);
+    const double sunk = deepest_below_crates(w, b);  // (its forward kinematics: the ankles below)
+    MatchFighter& f = w.match.fighter[b.index];
+    f.reset_lift = std::max(0.0, sunk);
+    f.reset_feet_off = 0.0;
+    for (int k = 0; k < 2; ++k)
+      f.reset_feet_off = std::max(f.reset_feet_off, (w.data.x[b.bodies.body[b.bones.foot[k]]].p - b.metrics.foot0[k]).head<2>().norm());
     if (sunk > kResetClearance) {
       b.desired.pose.root_position.z() += sunk;
       set_character_pose(w.model, w.data, b.bodies, w.boxer_desc, b.desired.pose.root_position, b.desired.pose.rotation);
@@ -424,6 +457,7 @@ void referee(World& w) {
         b.ctl.root_spring.set_consciousness(std::max(b.ctl.root_spring.consciousness(), tu.after_count));
         pass_through_opponent(w, k, false);
         back_to_marks(w);
+        g.reset_lift = f.reset_lift, g.reset_feet_off = f.reset_feet_off;
       }
     }
     // The count: not up in count_seconds is a knock-out.
@@ -642,6 +676,8 @@ nlohmann::json match_report(const World& w) {
                       {"up_at_s", g.up_at >= 0.0 ? nlohmann::json(g.up_at) : nlohmann::json(nullptr)},
                       {"lying", g.lying.empty() ? nlohmann::json(nullptr) : nlohmann::json(g.lying)},
                       {"root_assist_rms_nm", g.assist_time > 0 ? std::sqrt(g.assist_sq_dt / g.assist_time) : 0.0},
+                      {"reset_lift_m", g.reset_lift},
+                      {"reset_feet_off_m", g.reset_feet_off},
                       {"root_assist_force_rms_n", g.assist_time > 0 ? std::sqrt(g.assist_force_sq_dt / g.assist_time) : 0.0},
                       {"stand_up_s", g.assist_time}});
   auto pair = [&mt](auto get) { return nlohmann::json::array({get(mt.fighter[0]), get(mt.fighter[1])}); };

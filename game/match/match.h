@@ -94,6 +94,9 @@ struct GetUp {
   std::string lying;                   // back | front ("" until chosen)
   double assist_sq_dt = 0.0, assist_time = 0.0;  // root assist torque^2 dt over the stand-up
   double assist_force_sq_dt = 0.0;               // root assist force^2 dt
+  // Up: placed back on its mark (back_to_marks): how far it was lifted out of the crates there, and how far (floor
+  // plane) the farther ankle stands from where it stood at the start (the clip's stance fitted to the same crates).
+  double reset_lift = 0.0, reset_feet_off = 0.0;  // m
 };
 
 // What the player asks of a boxer (keys, game/app.cpp): a punch, a defence or a step; taken by the motion graph like
@@ -122,6 +125,7 @@ struct MatchFighter {
   double still = 0.0;            // s lying still
   double settled = 0.0;          // s up and still (the end of a stand-up)
   int getup = -1;                // getups index of the current knockdown
+  double reset_lift = 0.0, reset_feet_off = 0.0;  // the last back_to_marks (GetUp::reset_lift, reset_feet_off)
   const char* saw_punch = nullptr;  // the other boxer started this punch on the last tick (for the AI)
   // The punch's target: a point fixed to the opponent's head or chest (bone frame), the opening chosen at the punch's
   // start (best_opening) and followed as the opponent moves.

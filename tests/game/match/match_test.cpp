@@ -84,6 +84,20 @@ TEST(Match, KnockedDownBoxerGetsUpFromTheWayItLiesWithinTheCount) {
   EXPECT_TRUE(hit_before);
 }
 
+// Up from a knockdown, the boxer is put back on its mark standing as it stood at the start: seed 5's red got up
+// turned away from blue, its feet crossed under it; placed with the desired pose's legs (reaching for those feet) it
+// stood cross-legged, a foot 21 cm inside a crate, was lifted out, sank and fell 1 s later with no punch on it.
+TEST(Match, BoxerUpFromAKnockdownStandsOnItsMarkAsAtTheStart) {
+  auto w = run_match(5, 66.0);
+  ASSERT_TRUE(w);
+  const Match& m = w->match;
+  ASSERT_FALSE(m.getups.empty()) << "seed 5: red down at 61.4 s, up at 65.8 s (scripts/match-sweep)";
+  const GetUp& g = m.getups.front();
+  ASSERT_GE(g.up_at, 0.0);
+  EXPECT_LT(g.reset_lift, 0.05);      // m: the clip's legs fitted to the mark's crates, nothing inside them
+  EXPECT_LT(g.reset_feet_off, 0.12);  // m: each ankle near where it stood at the start (the same stance, same crates)
+}
+
 TEST(Match, SameSeedGivesTheSameFight) {
   auto a = run_match(2, 12.0), b = run_match(2, 12.0);
   ASSERT_TRUE(a && b);
