@@ -546,6 +546,22 @@ bool GraphWalker::request_clip(const std::string& name, bool repeat) {
   return ok;
 }
 
+bool GraphWalker::restart(const std::string& name) {
+  const int c = g_->clip_index(name.empty() ? g_->content.home_clip : name);
+  if (c < 0) return false;
+  clip_ = c;
+  frame_ = 0;
+  time_ = 0.0;
+  T_ = Align2D{};
+  prev_clip_ = -1;
+  prev_T_ = Align2D{};
+  blend_ = Blend{};
+  plan_.clear();
+  plan_target_.clear();
+  repeat_ = false;
+  return true;
+}
+
 bool GraphWalker::force_clip(const std::string& name) {
   const int b = g_->clip_index(name);
   if (b < 0) return false;

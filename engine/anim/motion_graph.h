@@ -151,6 +151,10 @@ class GraphWalker {
   // frame 0 of the clip, from any frame; its natural continuations take over afterwards
   // (fall_back -> down_back -> getup_back -> guard). Returns false for an unknown clip.
   bool force_clip(const std::string& name);
+  // A reset: the walk starts over at frame 0 of the clip (the home clip when empty) at its origin, as when it was made:
+  // no blend, no plan, the root motion accumulated so far dropped (the caller sets the body on the new pose). The random
+  // stream carries on. Returns false for an unknown clip.
+  bool restart(const std::string& name = {});
 
   // The walk's world pose `ahead` seconds after the last tick, were it to stay in the current clip (and blend): the
   // next transition is not drawn yet, so time stops at the clip's end. Look-ahead, e.g. where a step will land.

@@ -140,48 +140,35 @@ double deepest_below_crates(World& w, const Boxer& b) {
 
 // The referee brings both boxers back to their marks once the downed one is up (a reset, as a fighting game's next
 // exchange: the boxers' steps do not carry them, arena.h, and a fall and get-up leave a boxer up to 0.8 m off its
-// mark, out of reach). Each body is set on its desired pose moved onto its mark, at rest; controllers start over.
+// mark, out of reach). Each body is set at rest on its starting pose (the walk in guard again), controllers start over.
 void back_to_marks(World& w, int only = -1) {
   for (Boxer& b : w.boxers) {
     if (only >= 0 && b.index != only) continue;
-    // Facing the opponent again: the walk's fall and get-up clips may have turned its root.
-    const double turn = std::remainder(b.stance.heading - eng::control::heading_of(b.desired.pose.rotation[0]), 2.0 * M_PI);
-    b.ctl.yaw_offset += turn;
     b.ctl.have_support_base = false;  // placed on the stance's crates (place_desired_pose), not where it got up
-    if (const eng::anim::GraphWalker* walker = b.source.walker()) {
-      // The walk's pose placed afresh, as at the start (the clip's legs fitted to the crates), turned so that the line
-      // from the rear foot to the lead foot lies as it did at the start and moved so that the feet's midpoint is where
-      // it was: the start's stance on the same crates. Why: the desired pose's legs reach for the feet where the boxer
-      // got up; turned and moved with it they put seed 5's red down cross-legged, a foot 21 cm inside a crate (lifted
-      // out, it sank and fell 1 s later with no punch on it); and turned by the pelvis's heading and moved by the
-      // pelvis, seed 4's boxers stood with that line 25 deg off and each foot 10 cm from its start (the guard's pelvis
-      // turns and sways over its feet).
-      const Eigen::Vector3d mid0 = 0.5 * (b.metrics.foot0[0] + b.metrics.foot0[1]);
-      const Eigen::Vector3d line0 = b.metrics.foot0[0] - b.metrics.foot0[1];
-      for (int pass = 0; pass < 3; ++pass) {
-        b.desired.pose = walker->preview(0.0);
-        place_desired_pose(w.boxer_desc, w.arena, b, b.desired);
-        if (pass == 2) break;
-        eng::control::pose_fk(w.boxer_desc.skeleton, b.desired.pose, b.scratch.fk_W, b.scratch.fk_P);
-        const Eigen::Vector3d& lead = b.scratch.fk_P[b.bones.foot[0]];
-        const Eigen::Vector3d& rear = b.scratch.fk_P[b.bones.foot[1]];
-        if (pass == 0) {
-          const Eigen::Vector3d line = lead - rear;
-          b.ctl.yaw_offset += std::remainder(std::atan2(line0.y(), line0.x()) - std::atan2(line.y(), line.x()), 2.0 * M_PI);
-        } else {
-          b.ctl.anchor += (mid0 - 0.5 * (lead + rear)).head<2>();
-        }
-      }
+    if (eng::anim::GraphWalker* walker = b.source.walker()) {
+      // The walk starts over in guard and the body is set on its pose placed as at the start (place_boxer): the
+      // start's stance on the same crates, facing the opponent. Why not the desired pose moved onto the mark: its legs
+      // reach for the feet where the boxer got up, and turned and moved with it they put seed 5's red down
+      // cross-legged, a foot 21 cm inside a crate (lifted out, it sank and fell 1 s later with no punch on it); the
+      // clip's legs at the clip's time placed by the foot line turned the pelvis up to 25 deg off the opponent
+      // (docs/decisions/match-fight.md).
+      walker->restart("guard");
+      b.ctl.yaw_offset = 0.0;
+      b.ctl.anchor.setZero();
+      b.desired.pose = walker->preview(0.0);
+      place_desired_pose(w.boxer_desc, w.arena, b, b.desired);
     } else {
+      // Facing the opponent again: the fall and get-up may have turned its root.
+      const double turn = std::remainder(b.stance.heading - eng::control::heading_of(b.desired.pose.rotation[0]), 2.0 * M_PI);
+      b.ctl.yaw_offset += turn;
       b.desired.pose.rotation[0] = (Eigen::AngleAxisd(turn, Eigen::Vector3d::UnitZ()) * b.desired.pose.rotation[0]).normalized();
       const Eigen::Vector2d shift = b.ctl.mark - b.desired.pose.root_position.head<2>();
       b.ctl.anchor += shift;
       b.desired.pose.root_position.head<2>() += shift;
     }
     set_character_pose(w.model, w.data, b.bodies, w.boxer_desc, b.desired.pose.root_position, b.desired.pose.rotation);
-    // The pose was placed on the crates where the boxer got up (or on the floor, knocked off the platform): at its
-    // mark it can stand lower than the crates there, its feet set inside them, and a body that starts inside a
-    // crate stays wedged in it (the chaos soak, issue 19). Lifted until nothing is below the tops under it.
+    // A body that starts inside a crate stays wedged in it (the chaos soak, issue 19): lifted until nothing is below
+    // the tops under it (a pose not from the walk, placed where it got up; the walk's is placed on the crates).
     const double sunk = deepest_below_crates(w, b);  // (its forward kinematics: the ankles below)
     MatchFighter& f = w.match.fighter[b.index];
     f.reset_lift = std::max(0.0, sunk);
@@ -192,7 +179,6 @@ void back_to_marks(World& w, int only = -1) {
       b.desired.pose.root_position.z() += sunk;
       set_character_pose(w.model, w.data, b.bodies, w.boxer_desc, b.desired.pose.root_position, b.desired.pose.rotation);
     }
-    b.ctl.have_support_base = false;
     for (auto& s : b.ctl.step) s.active = false;
     for (auto& g : b.ctl.gate) g = {};
   }

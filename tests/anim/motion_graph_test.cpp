@@ -365,3 +365,24 @@ TEST(GraphWalker, PreviewIsTheNextTicksPoseWhileTheWalkStaysInItsClip) {
   }
   EXPECT_GT(compared, 240 * 10);
 }
+
+TEST(GraphWalker, RestartPlaysTheClipsFirstFrameAtTheWalksOrigin) {
+  // After a walk through falls and get-ups (root motion accumulated, turned), restart("guard") gives the pose a new
+  // walker starting in guard gives: frame 0 of the clip, unaligned (the referee's reset sets the body on it).
+  const MotionGraph& g = graph();
+  GraphWalker w(g, 8), fresh(g, 8, "guard");
+  for (int i = 0; i < 40; ++i) w.tick(1.0 / 30);
+  ASSERT_TRUE(w.force_clip("fall_back"));
+  for (int i = 0; i < 30 * 6; ++i) w.tick(1.0 / 30);
+  const Pose before = w.preview(0.0), start = fresh.preview(0.0);
+  ASSERT_GT((before.root_position - start.root_position).head<2>().norm() + angle_between(before.rotation[0], start.rotation[0]), 1e-3)
+      << "the walk should have moved off its origin";
+  ASSERT_TRUE(w.restart("guard"));
+  EXPECT_EQ(w.current_clip(), "guard");
+  EXPECT_FALSE(w.blending());
+  EXPECT_FALSE(w.has_plan());
+  const Pose now = w.preview(0.0);
+  EXPECT_LT((now.root_position - start.root_position).norm(), 1e-12);
+  for (size_t b = 0; b < now.rotation.size(); ++b) EXPECT_LT(angle_between(now.rotation[b], start.rotation[b]), 1e-12) << b;
+  EXPECT_FALSE(w.restart("no_such_clip"));
+}
