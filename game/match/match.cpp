@@ -298,6 +298,7 @@ void track_punches(World& w, const char* started[2]) {
     const Clip& c = w.graph.clips[idx];
     if (!is_punch(&c) || !standing_state(b.ctl.state.state)) continue;
     ++f.thrown;
+    if (const int pi = punch_index(c.name); pi >= 0) ++f.ai.thrown_of[pi];
     PunchEvent e;
     e.t = w.data.time;
     e.boxer = k;
@@ -350,6 +351,7 @@ void read_hits(World& w) {
       } else if ((def.part == BodyPart::Head || def.part == BodyPart::Torso) && h.approach_speed >= mt.tuning.land_speed) {
         e.landed = true;
         ++f.landed;
+        if (const int pi = punch_index(e.punch); pi >= 0) ++f.ai.landed_of[pi];
         f.landing = f.open_punch;
         f.landing_until = t + mt.tuning.impact_window;
         e.impulse = 0.0;  // summed from the touching pairs below, this step included

@@ -66,10 +66,10 @@ TEST(Match, PunchesLandOnlyThroughTheStrikingGloveOnHeadOrTorsoAtSpeed) {
 }
 
 TEST(Match, KnockedDownBoxerGetsUpFromTheWayItLiesWithinTheCount) {
-  auto w = run_match(11, 27.0);
+  auto w = run_match(19, 20.0);
   ASSERT_TRUE(w);
   const Match& m = w->match;
-  ASSERT_FALSE(m.getups.empty()) << "seed 11 has a knockdown in its first 27 s (at 22.7 s, face down, scripts/match-sweep)";
+  ASSERT_FALSE(m.getups.empty()) << "seed 19 has a knockdown in its first 20 s (at 12.1 s, face down, scripts/match-sweep)";
   const GetUp& g = m.getups.front();
   EXPECT_TRUE(g.lying == "back" || g.lying == "front");
   ASSERT_GE(g.up_at, 0.0);
@@ -96,6 +96,31 @@ TEST(Match, BoxerUpFromAKnockdownStandsOnItsMarkAsAtTheStart) {
   ASSERT_GE(g.up_at, 0.0);
   EXPECT_LT(g.reset_lift, 0.05);      // m: the clip's legs fitted to the mark's crates, nothing inside them
   EXPECT_LT(g.reset_feet_off, 0.12);  // m: each ankle near where it stood at the start (the same stance, same crates)
+}
+
+// The AI throws more of what lands on this opponent: with the lead hook blocked 20 times in 20 and the jab landing 10
+// of 20, the hook's share of the picks falls from a seventh to a fiftieth, the jab's rises by half.
+TEST(FighterAi, ThrowsMoreOfWhatLands) {
+  const auto shares = [](bool history) {
+    FighterAi ai;
+    ai.rng = Rng(7);
+    ai.style.punch_weight = {1, 1, 1, 1, 1, 1, 1};
+    if (history) {
+      ai.thrown_of[punch_index("lead_hook")] = 20;
+      ai.thrown_of[punch_index("jab")] = 20, ai.landed_of[punch_index("jab")] = 10;
+    }
+    std::array<int, kPunchClips.size()> n{};
+    for (int i = 0; i < 20000; ++i) ++n[punch_index(pick_punch(ai))];
+    return n;
+  };
+  const auto before = shares(false), after = shares(true);
+  const int hook = punch_index("lead_hook"), jab = punch_index("jab");
+  EXPECT_NEAR(before[hook] / 20000.0, 1.0 / 7.0, 0.01);  // the favourites alone: uniform here
+  // Weights (landed + 1) / (thrown + 3): the hook 1/23, the jab 11/23, the five others 1/3 each.
+  const double total = 1.0 / 23 + 11.0 / 23 + 5.0 / 3;
+  EXPECT_NEAR(after[hook] / 20000.0, (1.0 / 23) / total, 0.005);  // 0.020, a seventh of 0.143
+  EXPECT_NEAR(after[jab] / 20000.0, (11.0 / 23) / total, 0.01);   // 0.218
+  EXPECT_EQ(punch_index("guard"), -1);
 }
 
 TEST(Match, SameSeedGivesTheSameFight) {
