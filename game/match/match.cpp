@@ -702,6 +702,7 @@ nlohmann::json match_report(const World& w) {
           {"round_seconds", mt.round_seconds},
           {"resets_to_marks", mt.resets},
           {"round", static_cast<int>(w.data.time / mt.round_seconds) + 1},
+          {"ended_at_s", w.data.time},  // the run's end: a knockdown less than the count before it has no up_at_s yet
           {"getups", getups},
           {"result", result},
           {"events", events}};
