@@ -4,7 +4,8 @@
 // another at once now and then (combinations), and when the other boxer's punch starts it defends with a
 // probability after a human reaction time (~0.2 s; visual simple reaction times of trained athletes are 0.15-0.25 s):
 // a block, a slip or a duck, chosen for the punch coming (hooks are ducked or blocked, straights slipped or blocked).
-// A few style parameters per boxer (aggression, defence, favourite punches) drawn from the seed.
+// A few style parameters per boxer (aggression, defence, favourite punches) drawn from the seed; the favourites are
+// weighted by what has landed on this opponent so far (FighterStyle::prior_throws).
 #include <array>
 #include <string>
 

@@ -5,7 +5,6 @@
 
 #include "engine/anim/motion_graph.h"
 #include "engine/control/servo/person_space.h"
-#include "engine/control/servo/world_pose.h"
 #include "engine/physics/dynamics.h"
 #include "game/character_builder.h"
 #include "game/match/punch_aim.h"
