@@ -98,6 +98,10 @@ flags:
                          where a balance step lands: past the capture point (default) or where Kwon & Hodgins'
                          cart-pole LQR comes to rest
   --flat                 a level platform (every crate 0.30 m) instead of the uneven crates
+  --priorities kudoh|off|auto
+                         balance QP: Kudoh's priorities in guard (the trunk's posture over the com's place, the
+                         arms brought back after they swing); auto (default): the match's, off elsewhere
+  --stance-drop M        the desired root M metres below the clip's (knees bent deeper; default 0.04)
   --contact-gap M        one foot-contact gap for every purpose (experiment; default: 2 cm support, 2 mm load,
                          5 mm fallen, docs/decisions/foot-contact-thresholds.md)
 graph flags:
@@ -299,6 +303,17 @@ eng::Result<Options> parse_cli(const std::vector<std::string>& args) {
       o.step_placement = *v;
     } else if (flag == "--flat") {
       o.flat = true;
+    } else if (flag == "--priorities") {
+      auto v = value();
+      if (!v) return missing();
+      if (*v != "kudoh" && *v != "off" && *v != "auto") return bad("--priorities must be kudoh, off or auto, got '" + *v + "'");
+      o.priorities = *v;
+    } else if (flag == "--stance-drop") {
+      auto v = value();
+      if (!v) return missing();
+      double x;
+      if (!parse_double(*v, 0.0, 0.2, x)) return bad("--stance-drop must be a depth in metres (0 to 0.2), got '" + *v + "'");
+      o.stance_drop = x;
     } else if (flag == "--root-spring-max") {
       auto v = value();
       if (!v) return missing();

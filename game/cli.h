@@ -59,6 +59,10 @@ struct Options {
                                       // lab); auto = on in the push lab, off elsewhere
   std::string step_placement = "capture";  // --step-placement capture|ipc: capture point or Kwon's cart-pole LQR
   bool flat = false;                  // --flat: one level platform (the papers' floor) instead of the uneven crates
+  // --priorities kudoh|off|auto: Kudoh's priorities in the balance QP (the trunk's posture x100, the com x30, the arms'
+  // return; BalanceQpTuning); auto = the match's own (on in guard), off elsewhere.
+  std::string priorities = "auto";
+  double stance_drop = -1.0;          // --stance-drop M: the desired root this far below the clip's (< 0: 0.04)
   double contact_gap = -1.0;          // m, < 0: each foot-contact purpose its own gap (FootContactThresholds)
   double root_spring_max = -1.0;      // N m, its torque limit; < 0: 400 with the QP, 120 with pd
   // match

@@ -148,6 +148,9 @@ void configure_boxer_control(World& w, Boxer& b) {
     q->trunk.assign(skel.size(), 0);
     for (int i = 0; i < skel.size(); ++i)
       q->trunk[i] = i == 0 || skel.name[i] == "abdomen" || skel.name[i] == "chest" || skel.name[i] == "neck" || skel.name[i] == "head";
+    q->arm.assign(skel.size(), 0);
+    for (int i = 0; i < skel.size(); ++i)
+      q->arm[i] = skel.name[i].rfind("upper_arm", 0) == 0 || skel.name[i].rfind("forearm", 0) == 0;
   }
   setup_implicit_servo(w, b);
 }
@@ -175,6 +178,11 @@ void add_boxer(World& w, int index, const Eigen::Vector3f& color, bool limp, con
   // Balance steps: on in the push lab; auto leaves the other scenarios as they were measured (the walk's and the
   // match's gated clip steps, the stand's drags) until the steps win there (docs/decisions/balance-steps.md).
   b.settings.stepping = w.options.stepping == "on" || (w.options.stepping == "auto" && w.options.scenario_id == Scenario::Push);
+  if (w.options.priorities == "kudoh") {  // the fight's (MatchTuning, match_setup), in any scenario
+    b.settings.tuning.qp.trunk_weight = MatchTuning{}.trunk_weight;
+    b.settings.tuning.qp.com_weight = MatchTuning{}.com_weight;
+  }
+  if (w.options.stance_drop >= 0.0) b.settings.tuning.qp.stance_drop = w.options.stance_drop;
   b.settings.placement = w.options.step_placement == "ipc" ? eng::control::StepPlacement::InvertedPendulumLqr
                                                            : eng::control::StepPlacement::CapturePoint;
   b.settings.gains.omega_n = w.options.servo_omega_n;

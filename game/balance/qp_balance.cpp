@@ -190,14 +190,25 @@ void actuate(QpBalance& q, BalanceTick& tick) {
   const bool kudoh = !b.ctl.balance_steps.step.active && d.time >= b.ctl.handled_until && (first_tick || int(in.contacts.size()) >= tq.min_support_contacts) &&
                      up.z() >= std::cos(tq.losing_balance_tilt) && b.ctl.state.state == BoxerState::Guard;
   const double trunk_price = kudoh ? tq.trunk_weight : 1.0;
+  // The arms' return (BalanceQpTuning::arm_return_*): with Kudoh's priorities, once the com has been slow a while.
+  if (vcom.head<2>().norm() < tq.arm_return_com_speed) {
+    if (q.slow_since < 0.0) q.slow_since = d.time;
+  } else {
+    q.slow_since = -1.0;
+  }
+  const bool arms_return = kudoh && tq.arm_return_weight > 0.0 && q.slow_since >= 0.0 && d.time - q.slow_since >= tq.arm_return_after;
   for (int i = 0; i < n; ++i) {
     eng::control::QpAngularTask t;
     t.body = b.bodies.body[i];
     const bool arm = aim.arm_gain != 1.0 && (i == aim.glove || i == aim_forearm || i == aim_upper) && aim.active;
     const double g = arm ? aim.arm_gain : 1.0;
-    t.alpha = g * g * kp * eng::control::orientation_error(b.ctl.servo.W_d[i], b.scratch.W_a[i]) +
-              g * kd * (b.ctl.servo.omega_d[i] - b.scratch.omega_a[i]);
+    const Eigen::Vector3d e = eng::control::orientation_error(b.ctl.servo.W_d[i], b.scratch.W_a[i]);
+    t.alpha = g * g * kp * e + g * kd * (b.ctl.servo.omega_d[i] - b.scratch.omega_a[i]);
     t.weight = b.control_body.I_eff[i] * (arm ? g * g : 1.0) * (q.trunk.size() > size_t(i) && q.trunk[i] ? trunk_price : 1.0);
+    if (arms_return && !arm && q.arm.size() > size_t(i) && q.arm[i] && e.norm() > tq.arm_return_step) {
+      t.alpha = kp * (tq.arm_return_step / e.norm()) * e + kd * (b.ctl.servo.omega_d[i] - b.scratch.omega_a[i]);
+      t.weight *= tq.arm_return_weight;
+    }
     in.angular.push_back(t);
   }
   // The punch's strike: the glove's centre driven along a velocity field into the target (PunchAim::strike).

@@ -48,6 +48,17 @@ struct BalanceQpTuning {
   // docs/decisions/match-fight.md and docs/decisions/balance-steps.md.
   double trunk_weight = 1.0;
   double com_weight = 1.0;
+  // The arms back to their pose after the trunk priority spun them (Kudoh's priorities on, the com slower than
+  // arm_return_com_speed for arm_return_after): each upper arm and forearm tracks a target at most arm_return_step
+  // ahead of where it is (a carrot, so the return is slow and the trunk and legs take its reaction), priced
+  // arm_return_weight times its inertia. Why: after Kudoh's 500 N from behind the trunk priority holds the trunk with
+  // the arms as reaction wheels, and they stayed 1.6-2.0 rad off for good (the com task outweighs their tracking);
+  // brought back at full gain they threw the boxer over; priced up without the carrot they stay
+  // (docs/decisions/balance-steps.md). 0 = off.
+  double arm_return_weight = 10.0;
+  double arm_return_step = 0.5;        // rad
+  double arm_return_com_speed = 0.15;  // m/s
+  double arm_return_after = 1.0;       // s
   double stance_drop = 0.04;          // m, the desired root this much below the clip's (knees bent deeper)
   double joint_torque_limit = 500.0;  // N m per joint (vector norm): a guard, never reached in play
   // While the boxer is losing its balance (fewer than min_support_contacts, or the pelvis tilted more than
@@ -64,6 +75,8 @@ struct QpBalance {
   eng::control::BalanceQpInput in;
   eng::control::BalanceQpParams params;  // prices and the root assist's limit (world.cpp, per tick the limit)
   std::vector<uint8_t> trunk;            // per bone: 1 for the trunk's (BalanceQpTuning::trunk_weight; world.cpp)
+  std::vector<uint8_t> arm;              // per bone: 1 for an upper arm or forearm (BalanceQpTuning::arm_return_*)
+  double slow_since = -1.0;              // s, the com slower than arm_return_com_speed since (< 0: not now)
   eng::control::BalanceQp ws;
   eng::control::BalanceQpResult out;
   long ticks = 0;

@@ -520,8 +520,10 @@ void match_setup(World& w) {
     b.settings.root_params.stun_time = mt.tuning.recovery_delay;
     b.settings.root_params.recovery_rate = mt.tuning.recovery_rate;
     // The fight's balance: Kudoh's priorities, the trunk held upright over the com (balance_qp.h BalanceQpTuning).
-    b.settings.tuning.qp.trunk_weight = mt.tuning.trunk_weight;
-    b.settings.tuning.qp.com_weight = mt.tuning.com_weight;
+    if (w.options.priorities != "off") {
+      b.settings.tuning.qp.trunk_weight = mt.tuning.trunk_weight;
+      b.settings.tuning.qp.com_weight = mt.tuning.com_weight;
+    }
   }
 }
 

@@ -77,6 +77,21 @@ TEST(Push, TheTraceHasTheCentreOfPressureUnderTheComAndFollowsKudohsSine) {
   EXPECT_FALSE(world.boxers[0].metrics.fell);
 }
 
+// Kudoh's 500 N x 0.1 s from behind, in place, with Kudoh's priorities (the fight's balance) and the knees 8 cm
+// deeper: the boxer stays up, the arms it swings to hold the trunk come back to the guard (without the return they
+// stayed 1.6-2.0 rad off on 7 of 8 seeds), and the plain lab balance falls (docs/decisions/balance-steps.md).
+TEST(Push, KudohsPushFromBehindIsSurvivedInPlaceAndTheArmsComeBack) {
+  const std::vector<std::string> push = {"--scenario", "push", "--seed", "1", "--stepping", "off", "--push-dir", "0",
+                                         "--push-force", "500", "--push-duration", "0.1", "--push-at", "2"};
+  auto kudoh = push;
+  for (const char* a : {"--priorities", "kudoh", "--stance-drop", "0.08"}) kudoh.push_back(a);
+  const auto m = run(kudoh, 8.0);
+  EXPECT_FALSE(m.fell) << "fell at " << m.fell_at << " s (" << m.fell_reason << ")";
+  EXPECT_LT(m.arm_error_end, 0.3);   // rad: the upper arms back on their pose
+  EXPECT_LT(m.arm_off_guard_s, 3.0);  // s more than 1.5 rad off: the swing itself, not for good
+  EXPECT_TRUE(run(push, 8.0).fell);   // the lab's own balance (no priorities) goes down
+}
+
 TEST(Push, SixTimesThatImpulseFloorsTheBoxer) {
   // The same scenario is not a pass by construction: 900 N x 0.1 s (90 kg m/s) from behind knocks the boxer down in
   // place. (With the push lab's balance steps it staggers on for seconds: the BalanceSteps tests.)
