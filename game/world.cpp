@@ -146,11 +146,12 @@ void configure_boxer_control(World& w, Boxer& b) {
     q->params.w_torque = b.settings.root_params.enabled ? b.settings.tuning.root.qp_torque_price : 0.0;
     const auto& skel = w.boxer_desc.skeleton;
     q->trunk.assign(skel.size(), 0);
-    for (int i = 0; i < skel.size(); ++i)
-      q->trunk[i] = i == 0 || skel.name[i] == "abdomen" || skel.name[i] == "chest" || skel.name[i] == "neck" || skel.name[i] == "head";
     q->arm.assign(skel.size(), 0);
-    for (int i = 0; i < skel.size(); ++i)
-      q->arm[i] = skel.name[i].rfind("upper_arm", 0) == 0 || skel.name[i].rfind("forearm", 0) == 0;
+    for (int i = 0; i < skel.size(); ++i) {
+      const std::string& name = skel.name[i];
+      q->trunk[i] = i == 0 || name == "abdomen" || name == "chest" || name == "neck" || name == "head";
+      q->arm[i] = name.rfind("upper_arm", 0) == 0 || name.rfind("forearm", 0) == 0;
+    }
   }
   setup_implicit_servo(w, b);
 }

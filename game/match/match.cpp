@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "engine/anim/motion_graph.h"
-#include "engine/control/servo/person_space.h"
 #include "engine/physics/dynamics.h"
 #include "game/character_builder.h"
 #include "game/match/punch_aim.h"
@@ -143,31 +142,22 @@ double deepest_below_crates(World& w, const Boxer& b) {
 void back_to_marks(World& w, int only = -1) {
   for (Boxer& b : w.boxers) {
     if (only >= 0 && b.index != only) continue;
+    eng::anim::GraphWalker* walker = b.source.walker();
+    if (!walker) continue;  // (the match's boxers always walk the graph)
+    // The walk starts over in guard and the body is set on its pose placed as at the start (place_boxer): the start's
+    // stance on the same crates, facing the opponent. Why not the desired pose moved onto the mark: its legs reach for
+    // the feet where the boxer got up, and turned and moved with it they put seed 5's red down cross-legged, a foot
+    // 21 cm inside a crate (lifted out, it sank and fell 1 s later with no punch on it); the clip's legs at the clip's
+    // time placed by the foot line turned the pelvis up to 25 deg off the opponent (docs/decisions/match-fight.md).
     b.ctl.have_support_base = false;  // placed on the stance's crates (place_desired_pose), not where it got up
-    if (eng::anim::GraphWalker* walker = b.source.walker()) {
-      // The walk starts over in guard and the body is set on its pose placed as at the start (place_boxer): the
-      // start's stance on the same crates, facing the opponent. Why not the desired pose moved onto the mark: its legs
-      // reach for the feet where the boxer got up, and turned and moved with it they put seed 5's red down
-      // cross-legged, a foot 21 cm inside a crate (lifted out, it sank and fell 1 s later with no punch on it); the
-      // clip's legs at the clip's time placed by the foot line turned the pelvis up to 25 deg off the opponent
-      // (docs/decisions/match-fight.md).
-      walker->restart("guard");
-      b.ctl.yaw_offset = 0.0;
-      b.ctl.anchor.setZero();
-      b.desired.pose = walker->preview(0.0);
-      place_desired_pose(w.boxer_desc, w.arena, b, b.desired);
-    } else {
-      // Facing the opponent again: the fall and get-up may have turned its root.
-      const double turn = std::remainder(b.stance.heading - eng::control::heading_of(b.desired.pose.rotation[0]), 2.0 * M_PI);
-      b.ctl.yaw_offset += turn;
-      b.desired.pose.rotation[0] = (Eigen::AngleAxisd(turn, Eigen::Vector3d::UnitZ()) * b.desired.pose.rotation[0]).normalized();
-      const Eigen::Vector2d shift = b.ctl.mark - b.desired.pose.root_position.head<2>();
-      b.ctl.anchor += shift;
-      b.desired.pose.root_position.head<2>() += shift;
-    }
+    walker->restart("guard");
+    b.ctl.yaw_offset = 0.0;
+    b.ctl.anchor.setZero();
+    b.desired.pose = walker->preview(0.0);
+    place_desired_pose(w.boxer_desc, w.arena, b, b.desired);
     set_character_pose(w.model, w.data, b.bodies, w.boxer_desc, b.desired.pose.root_position, b.desired.pose.rotation);
     // A body that starts inside a crate stays wedged in it (the chaos soak, issue 19): lifted until nothing is below
-    // the tops under it (a pose not from the walk, placed where it got up; the walk's is placed on the crates).
+    // the tops under it (a guard: the walk's pose is placed on the crates, reset_lift reports any lift).
     const double sunk = deepest_below_crates(w, b);  // (its forward kinematics: the ankles below)
     MatchFighter& f = w.match.fighter[b.index];
     f.reset_lift = std::max(0.0, sunk);
