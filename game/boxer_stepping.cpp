@@ -210,7 +210,10 @@ void take_balance_steps(const eng::physics::Model& m, const eng::physics::Data& 
         for (int j = 0; j < 2; ++j)
           want[j] = (b.scratch.fk_P[feet[j]] + b.scratch.fk_W[feet[j]] * g.centre).head<2>();
         const Eigen::Vector2d to = sole[1 - r] + (want[r] - want[1 - r]);
-        if ((to - sole[r]).norm() > t.return_tolerance && b.settings.stepping) {
+        const Eigen::Vector2d fwd(std::cos(b.stance.heading), std::sin(b.stance.heading)), left(-fwd.y(), fwd.x());
+        const double apart = (sole[0] - sole[1]).norm();
+        const bool keep = left.dot(sole[0] - sole[1]) >= t.return_keep_width && apart >= t.min_gap && apart <= t.max_reach;
+        if ((to - sole[r]).norm() > t.return_tolerance && !keep && b.settings.stepping) {
           st.shifting = r;  // first the weight goes over the other foot (below), then the foot steps
           st.shift_time = 0.0;
           st.return_to = to;

@@ -148,7 +148,9 @@ void actuate(QpBalance& q, BalanceTick& tick) {
       for (const auto& c : in.contacts) q.pts.push_back(c.point.head<2>());
       eng::control::convex_hull_2d_in_place(q.pts, q.hull);
       Eigen::Vector2d target = eng::control::clamp_to_polygon(q.hull, com_a.head<2>() - e.head<2>(), tq.support_margin);
-      // A step held for its weight shift (gate_lift_off): the target goes over the other foot's contacts.
+      // A step held for its weight shift (gate_lift_off): the target goes over the other foot's contacts. The
+      // return step's (take_balance_steps) gets there at tq.return_shift_speed.
+      bool return_shift = false;
       for (int k = 0; k < 2; ++k) {
         if (!b.ctl.gate[k].holding) continue;
         const int other = b.bodies.body[feet[1 - k]];
@@ -158,7 +160,16 @@ void actuate(QpBalance& q, BalanceTick& tick) {
         if (q.pts.empty()) continue;
         eng::control::convex_hull_2d_in_place(q.pts, q.hull);
         target = eng::control::clamp_to_polygon(q.hull, target, tq.shift_margin);
+        if (b.ctl.balance_steps.shifting == k) {
+          if (!q.return_shift) q.return_shift_target = com_a.head<2>();
+          const Eigen::Vector2d to = target - q.return_shift_target;
+          const double most = tq.return_shift_speed * dt;
+          q.return_shift_target += to.norm() > most ? Eigen::Vector2d(to * (most / to.norm())) : to;
+          target = q.return_shift_target;
+          return_shift = true;
+        }
       }
+      q.return_shift = return_shift;
       e.head<2>() = com_a.head<2>() - target;
     }
     const double kp = tq.com_omega * tq.com_omega, kd = 2.0 * tq.com_omega;
@@ -265,6 +276,7 @@ void actuate(QpBalance& q, BalanceTick& tick) {
       const double sw = quick ? tq.balance_step_omega : wn, skp = sw * sw, skd = 2.0 * sw;
       t.acc = (quick ? skp : kp) * (target - t.point) + (quick ? skd : kd) * ((loaded[k] ? Eigen::Vector3d::Zero() : v_ff) - v);
       t.weight = tq.swing_weight * desc.bones[feet[k]].mass;
+      if (quick && tq.balance_step_relative) t.ref_body = pelvis, t.ref_point = d.x[pelvis].p;
       in.points.push_back(t);
       // A stepping foot is kept level as strongly as a planted one: weakly held (its servo inertia), the leg lifted
       // the ankle while the toe stayed on the crate, the foot pitched 10-40 deg toe-down and dragged.

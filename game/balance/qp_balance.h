@@ -37,6 +37,10 @@ struct BalanceQpTuning {
   double balance_step_omega = 25.0;   // rad/s, a balance step's swing tracked this stiffly (the servo's 15: landed late)
   double balance_step_speed = 4.5;    // m/s, its feed-forward velocity bound
   double balance_step_com_scale = 0.1;  // the com / momentum tasks' price during its swing (1: fewer pushes survived)
+  bool balance_step_relative = true;   // its swing foot's task relative to the pelvis (QpPointTask::ref_body)
+  // The return step's weight shift (balance_step.h phase 3): the com target moves over the other foot at most this fast.
+  // Set there at once, the com ran 0.4 m/s off the far side of a post-step stance 0.5 m wide and the return fell.
+  double return_shift_speed = 0.2;    // m/s
   double max_com_acc = 6.0;           // m/s^2, the desired com acceleration's bound
   // Kudoh's priorities (qp-balance-kudoh-thesis section 3: the trunk's posture held above the com's place): the
   // trunk's orientation tasks (pelvis, abdomen, chest, neck, head) priced trunk_weight times a limb's per unit of
@@ -76,6 +80,8 @@ struct QpBalance {
   eng::control::BalanceQpParams params;  // prices and the root assist's limit (world.cpp, per tick the limit)
   std::vector<uint8_t> trunk;            // per bone: 1 for the trunk's (BalanceQpTuning::trunk_weight; world.cpp)
   std::vector<uint8_t> arm;              // per bone: 1 for an upper arm or forearm (BalanceQpTuning::arm_return_*)
+  bool return_shift = false;              // the return step's weight shift under way: its com target ...
+  Eigen::Vector2d return_shift_target = Eigen::Vector2d::Zero();  // ... moving over the other foot
   double slow_since = -1.0;              // s, the com slower than arm_return_com_speed since (< 0: not now)
   eng::control::BalanceQp ws;
   eng::control::BalanceQpResult out;

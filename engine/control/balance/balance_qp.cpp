@@ -213,7 +213,16 @@ void balance_qp_solve(const physics::Model& m, const physics::Data& d, const Bal
   }
   for (const QpPointTask& t : in.points) {
     block_jacobian(m, d, t.body, t.point, b0, n, ws.J, ws.cols);
-    add_task(3, t.acc - bias_point_acceleration(m, d, t.body, t.point), t.weight);
+    Vec3 bias = bias_point_acceleration(m, d, t.body, t.point);
+    if (t.ref_body >= 0) {
+      // J_point - J_ref: the reference's DoFs are among the point's (an ancestor's chain is part of its descendant's).
+      block_jacobian(m, d, t.ref_body, t.ref_point, b0, n, ws.J_ref, ws.cols_ref);
+      for (size_t r = 0; r < ws.cols_ref.size(); ++r)
+        for (size_t a = 0; a < ws.cols.size(); ++a)
+          if (ws.cols[a] == ws.cols_ref[r]) ws.J.col(static_cast<int>(a)) -= ws.J_ref.col(static_cast<int>(r));
+      bias -= bias_point_acceleration(m, d, t.ref_body, t.ref_point);
+    }
+    add_task(3, t.acc - bias, t.weight);
   }
   // Contact points stay put (damped): a heavily weighted task rather than an equality, because a flat foot's
   // four corners give 12 dependent rows, and a foot touching at one corner or edge must stay free to roll flat

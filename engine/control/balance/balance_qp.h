@@ -65,6 +65,12 @@ struct QpPointTask {
   Vec3 point = Vec3::Zero();
   Vec3 acc = Vec3::Zero();
   double weight = 1.0;
+  // ref_body >= 0 (an ancestor of body, e.g. the root): the task is on the point's acceleration relative to ref_point
+  // fixed to ref_body, acc = a_point - a_ref: a swing foot driven by its own leg. (On its world acceleration, with the
+  // com priced low during a balance step, the plan carried the whole body after the foot: the pelvis yawed 40-70 deg
+  // and the com rose 15 cm in a crossing step.)
+  int ref_body = -1;
+  Vec3 ref_point = Vec3::Zero();
 };
 
 struct BalanceQpInput {
@@ -128,6 +134,8 @@ using QpVecN = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kQpMaxDofs, 1>;
 
 struct BalanceQp {
   QpMat6N J;     // a task's Jacobian, compacted to its columns
+  QpMat6N J_ref;              // a relative point task's reference Jacobian ...
+  std::vector<int> cols_ref;  // ... and its columns
   QpMatNN H;
   QpMat6K A;     // the pyramid edges' wrench about the com
   QpMatNK G;     // generalised force of each pyramid edge (J_c^T u), n x K

@@ -111,6 +111,10 @@ StepLanding place_balance_step(StepPlacement how, const Eigen::Vector2d& com, co
     }
     const Eigen::Vector2d dir = land - p;
     if (dir.norm() > 1e-6) land += t.land_margin * dir.normalized();
+    if (vcom.norm() > 1e-6) {
+      const Eigen::Vector2d across(-vcom.y() / vcom.norm(), vcom.x() / vcom.norm());
+      land += (across.dot(land - stance) >= 0.0 ? t.side_margin : -t.side_margin) * across;
+    }
     // Within the leg's reach before the next round's swing time (a huge push's landing otherwise ran off to infinity
     // through e^{omega T}).
     if ((land - stance).norm() > t.max_reach) land = stance + (land - stance) * (t.max_reach / (land - stance).norm());

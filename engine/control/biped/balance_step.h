@@ -26,6 +26,10 @@ struct BalanceStepTuning {
   double trigger_margin = 0.02;  // m, the capture point this far outside the feet's soles' hull starts a step ...
   double min_speed = 0.15;       // m/s ... with the com moving at least this fast (a body at rest is not pushed)
   double land_margin = 0.05;     // m, the landing's sole centre this far beyond the predicted capture point
+  // m, and this far to the side, across the com's motion away from the stance foot: the capture point lands between the
+  // feet, not on the new sole's edge (the com drifts sideways over a single support; landed on its line, the capture
+  // point left the two feet's narrow hull after touch-down and a second, crossing step followed)
+  double side_margin = 0.08;
   double min_duration = 0.26;    // s, the quickest swing (lift, travel, set down)
   double swing_speed = 2.2;      // m/s, mean horizontal swing speed: a longer step takes longer
   double lift = 0.06;            // m, the sole's clearance at mid-swing above the highest top on its way
@@ -39,6 +43,11 @@ struct BalanceStepTuning {
   double settle_speed = 0.15;    // m/s, com speed under which the return phase may start (Yin's gamma)
   double settle_time = 0.4;      // s, ... for this long, after the last landing
   double return_tolerance = 0.10;  // m, a foot this far from its stance place relative to the other returns
+  // m, ... unless the feet stand as the body can fight from: the left foot this far left of the right (across the
+  // heading; not crossed, not in line) and between min_gap and max_reach apart. A return step is a single support
+  // from a wide stance, the recovery's riskiest phase: a forward push's step leaves the feet swapped, 0.9 m from the
+  // guard's, and their return fell more often than the push.
+  double return_keep_width = 0.10;
   double return_duration = 0.45;   // s, the return step's swing (unhurried)
   double return_shift_margin = 0.02;  // m, it lifts once the capture point is this far inside the other sole ...
   double return_shift_max = 1.0;      // s, ... and is given up when the weight shift takes longer

@@ -219,3 +219,32 @@ TEST(BalanceQp, PricedTorquesStillHoldTheArmAndMeetTheDynamics) {
   EXPECT_NEAR(priced.tau[hinge], free_tau.tau[hinge], 0.01 * std::abs(free_tau.tau[hinge]));
   EXPECT_NEAR(priced.qacc[hinge], free_tau.qacc[hinge], 0.01);
 }
+
+TEST(BalanceQp, ARelativePointTaskIsMetRelativeToItsReferenceWhileTheBaseRecoils) {
+  // The box and its arm in the air (no contacts: momentum is conserved, the torso recoils from the arm) and one task:
+  // the arm's tip accelerating relative to the hinge point on the torso (QpPointTask::ref_body). The plan's relative
+  // acceleration, recomputed independently from the physics' point Jacobians, is the asked one; the tip's world
+  // acceleration is not (the torso's recoil), which is what the relative task is for.
+  Stand s(0.3);
+  s.in.contacts.clear();
+  s.in.angular.clear();
+  s.in.com_acc = s.m.gravity;  // falling freely
+  const Vec3 tip = s.d.x[s.arm].apply(Vec3(0.4, 0.0, 0.0)), hinge = s.d.x[s.torso].apply(Vec3(0.0, 0.0, 0.05));
+  const Vec3 tangent = Vec3::UnitY().cross(tip - hinge).normalized();  // the way the hinge moves the tip
+  eng::control::QpPointTask t;
+  t.body = s.arm, t.point = tip, t.acc = -3.0 * tangent, t.weight = 100.0;
+  t.ref_body = s.torso, t.ref_point = hinge;
+  s.in.points.push_back(t);
+  BalanceQp ws;
+  BalanceQpResult out;
+  eng::control::balance_qp_solve(s.m, s.d, s.in, BalanceQpParams{}, ws, out);
+  MatX Jt, Jh;
+  point_jacobian(s.m, s.d, s.arm, tip, Jt);
+  point_jacobian(s.m, s.d, s.torso, hinge, Jh);
+  const Vec3 a_tip = Jt * out.qacc + eng::control::bias_point_acceleration(s.m, s.d, s.arm, tip);
+  const Vec3 a_hinge = Jh * out.qacc + eng::control::bias_point_acceleration(s.m, s.d, s.torso, hinge);
+  EXPECT_NEAR((a_tip - a_hinge).dot(tangent), -3.0, 0.03);
+  EXPECT_GT((a_hinge - s.m.gravity).norm(), 0.1) << "the torso recoils from the arm";
+  EXPECT_GT(((a_tip - s.m.gravity) - t.acc).norm(), 0.1) << "so the tip's own acceleration is not the asked one";
+  EXPECT_LT(out.root_residual, 1e-6);
+}

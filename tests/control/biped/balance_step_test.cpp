@@ -67,15 +67,22 @@ TEST(CartPoleLqr, StabilisesTheLinearisedPendulumAndBringsTheCartUnderTheCom) {
 TEST(PlaceBalanceStep, LandsPastTheCapturePointAtTouchDown) {
   BalanceStepTuning t;
   const double w = eng::control::lip_omega(0.95);
-  const Vector2d stance(0.0, 0.12), from(-0.1, -0.12), com(0.05, 0.0), v(0.8, 0.0);
+  const Vector2d stance(0.0, 0.12), from(-0.1, -0.12), com(0.05, 0.0), v(0.6, 0.0);
   const auto hull = sole_at(stance);
   const auto land = eng::control::place_balance_step(eng::control::StepPlacement::CapturePoint, com, v, w, from, stance,
                                                      hull, 0.0, nullptr, t);
+  ASSERT_LT((land.to - stance).norm(), t.max_reach - 0.05) << "a push the leg's reach does not bound";
   // The capture point at touch-down with the centre of pressure at the stance sole's edge nearest to it.
   const Vector2d xi = com + v / w, p = eng::control::clamp_to_polygon(hull, xi, 0.0);
   const Vector2d xi_T = eng::control::capture_point_after(xi, p, w, land.duration);
   EXPECT_GT((land.to - p).norm(), (xi_T - p).norm()) << "lands beyond the capture point (the margin)";
-  EXPECT_NEAR((land.to - xi_T).norm(), t.land_margin, 1e-9);
+  // land_margin beyond it, away from the stance foot's centre of pressure, and side_margin across the com's motion
+  // away from the stance foot (here to the right: the stance foot is the left one).
+  const Vector2d expected = xi_T + t.land_margin * (xi_T - p).normalized() + t.side_margin * Vector2d(0.0, -1.0);
+  EXPECT_LT((land.to - expected).norm(), 1e-9);
+  // So the capture point at touch-down lies between the feet across the motion, not on the new sole's edge.
+  EXPECT_GT(xi_T.y() - land.to.y(), 0.5 * t.side_margin);
+  EXPECT_LT(xi_T.y(), stance.y());
   EXPECT_GE(land.duration, t.min_duration);
 }
 
