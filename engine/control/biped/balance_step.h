@@ -9,7 +9,8 @@
 //      multi-step recoveries come out of the same rule;
 //   2. reduce momentum: the balance QP's com task over the new, wider support (the caller's);
 //   3. return to the stance: once the com has nearly stopped (Yin's gamma = 0.15 m/s), a slower step puts the foot
-//      that moved back where the stance has it relative to the other foot (the boxer's guard).
+//      that moved back where the stance has it relative to the other foot (the boxer's guard), unless the feet already
+//      stand as the boxer can fight from (return_keep_width).
 // Pure functions over plain data; the game calls them each control tick (game/boxer_stepping.cpp).
 #include <Eigen/Core>
 #include <vector>
