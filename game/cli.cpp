@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <functional>
+#include <initializer_list>
 #include <map>
 #include <set>
 
@@ -138,6 +139,22 @@ eng::Result<Options> parse_cli(const std::vector<std::string>& args) {
       return need_value(flag);
     };
     auto missing = [&]() { return bad("flag " + flag + " needs a value"); };
+    // A flag whose value is one of a few words: stored in `into`, or the error naming them ("a, b or c").
+    auto choice = [&](std::initializer_list<const char*> allowed, std::string& into) -> std::optional<eng::Error> {
+      auto v = value();
+      if (!v) return missing();
+      std::string words;
+      size_t k = 0;
+      for (const char* word : allowed) {
+        if (*v == word) {
+          into = *v;
+          return std::nullopt;
+        }
+        words += (k == 0 ? "" : k + 1 == allowed.size() ? " or " : ", ") + std::string(word);
+        ++k;
+      }
+      return bad(flag + " must be " + words + ", got '" + *v + "'");
+    };
 
     if (flag == "--help" || flag == "-h") {
       o.help = true;
@@ -206,10 +223,9 @@ eng::Result<Options> parse_cli(const std::vector<std::string>& args) {
       if (!parse_double(*v, 1.0, 86400.0, o.round_seconds))
         return bad("--round-seconds must be a number from 1 to 86400, got '" + *v + "'");
     } else if (flag == "--player") {
-      auto v = value();
-      if (!v) return missing();
-      if (*v != "0" && *v != "1") return bad("--player must be 0 or 1, got '" + *v + "'");
-      o.player = *v == "0" ? 0 : 1;
+      std::string v;
+      if (auto e = choice({"0", "1"}, v)) return *e;
+      o.player = v == "0" ? 0 : 1;
     } else if (flag == "--input" || flag == "--record") {
       auto v = value();
       if (!v) return missing();
@@ -233,10 +249,9 @@ eng::Result<Options> parse_cli(const std::vector<std::string>& args) {
       if (!parse_double(*v, 0.0, 100.0, o.chaos))
         return bad("--chaos must be a rate in events per second from 0 to 100, got '" + *v + "'");
     } else if (flag == "--slow") {
-      auto v = value();
-      if (!v) return missing();
-      if (*v != "1" && *v != "2" && *v != "4" && *v != "10") return bad("--slow must be 1, 2, 4 or 10, got '" + *v + "'");
-      o.slow = std::stoi(*v);
+      std::string v;
+      if (auto e = choice({"1", "2", "4", "10"}, v)) return *e;
+      o.slow = std::stoi(v);
     } else if (flag == "--render-every") {
       auto v = value();
       if (!v) return missing();
@@ -256,10 +271,9 @@ eng::Result<Options> parse_cli(const std::vector<std::string>& args) {
       else if (flag == "--push-duration") o.push_duration = x;
       else o.push_at = x;
     } else if (flag == "--push-shape") {
-      auto v = value();
-      if (!v) return missing();
-      if (*v != "pulse" && *v != "sine") return bad("--push-shape must be pulse or sine, got '" + *v + "'");
-      o.push_sine = *v == "sine";
+      std::string v;
+      if (auto e = choice({"pulse", "sine"}, v)) return *e;
+      o.push_sine = v == "sine";
     } else if (flag == "--servo-wn" || flag == "--servo-zeta") {
       auto v = value();
       if (!v) return missing();
@@ -275,39 +289,19 @@ eng::Result<Options> parse_cli(const std::vector<std::string>& args) {
         return bad("--render-scale must be auto or a number from 0.25 to 1, got '" + *v + "'");
       o.render_scale = x;
     } else if (flag == "--present") {
-      auto v = value();
-      if (!v) return missing();
-      if (*v != "auto" && *v != "swapchain" && *v != "shm")
-        return bad("--present must be auto, swapchain or shm, got '" + *v + "'");
-      o.present = *v;
+      if (auto e = choice({"auto", "swapchain", "shm"}, o.present)) return *e;
     } else if (flag == "--balance") {
-      auto v = value();
-      if (!v) return missing();
-      if (*v != "qp" && *v != "pd") return bad("--balance must be qp or pd, got '" + *v + "'");
-      o.balance = *v;
+      if (auto e = choice({"qp", "pd"}, o.balance)) return *e;
     } else if (flag == "--root-spring") {
-      auto v = value();
-      if (!v) return missing();
-      if (*v != "on" && *v != "off" && *v != "auto")
-        return bad("--root-spring must be on, off or auto, got '" + *v + "'");
-      o.root_spring = *v;
+      if (auto e = choice({"on", "off", "auto"}, o.root_spring)) return *e;
     } else if (flag == "--stepping") {
-      auto v = value();
-      if (!v) return missing();
-      if (*v != "on" && *v != "off" && *v != "auto") return bad("--stepping must be on, off or auto, got '" + *v + "'");
-      o.stepping = *v;
+      if (auto e = choice({"on", "off", "auto"}, o.stepping)) return *e;
     } else if (flag == "--step-placement") {
-      auto v = value();
-      if (!v) return missing();
-      if (*v != "capture" && *v != "ipc") return bad("--step-placement must be capture or ipc, got '" + *v + "'");
-      o.step_placement = *v;
+      if (auto e = choice({"capture", "ipc"}, o.step_placement)) return *e;
     } else if (flag == "--flat") {
       o.flat = true;
     } else if (flag == "--priorities") {
-      auto v = value();
-      if (!v) return missing();
-      if (*v != "kudoh" && *v != "off" && *v != "auto") return bad("--priorities must be kudoh, off or auto, got '" + *v + "'");
-      o.priorities = *v;
+      if (auto e = choice({"kudoh", "off", "auto"}, o.priorities)) return *e;
     } else if (flag == "--stance-drop") {
       auto v = value();
       if (!v) return missing();
