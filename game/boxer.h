@@ -43,6 +43,14 @@ struct BoxerMetrics {
   int balance_steps = 0, return_steps = 0;  // balance QP: steps the balance took (balance_step.h), steps back to the stance
   int most_steps_in_recovery = 0;           // the longest multi-step recovery
   double max_com_speed = 0.0;
+  // How far each foot's sole centre slid over the ground while planted, upright (m): per planting (the foot on the
+  // ground, no step carrying it) the distance from where it was set down to where it is or lifted, summed over the
+  // plantings (net, so the contact's sub-millimetre jitter does not add up). The graph walks' rear foot slides
+  // 0.3-0.9 m in 10 minutes under the rear-hand punches' pivots (docs/decisions/foot-slide.md).
+  double foot_slide[2] = {0.0, 0.0};
+  double foot_slide_closed[2] = {0.0, 0.0};  // the plantings that ended
+  Eigen::Vector2d foot_anchor[2] = {Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero()};  // where this planting began
+  bool foot_was_down[2] = {false, false};
   // The upper arms against the pose the servo tracks (b.ctl.servo.W_d): time in guard with either more than
   // kArmOffPose off (an arm left spread, or swung as a reaction wheel), and the larger error at the last sample.
   static constexpr double kArmOffPose = 1.5;  // rad

@@ -54,6 +54,17 @@ void boxer_measure(const eng::physics::Model& m, const eng::physics::Data& d, co
     mt.arm_error_end = worst;
     if (b.ctl.state.state == BoxerState::Guard && worst > BoxerMetrics::kArmOffPose) mt.arm_off_guard_s += dt;
   }
+  for (int k = 0; k < 2; ++k) {  // the planted feet's slide (BoxerMetrics::foot_slide)
+    const int fb = b.bodies.body[b.bones.foot[k]];
+    const Eigen::Vector2d sole = (d.x[fb].p + d.x[fb].R * b.settings.tuning.foot.centre).head<2>();
+    const eng::control::BalanceStep& step = b.ctl.balance_steps.step;
+    const bool carried = b.ctl.step[k].active || (step.active && step.foot == k);
+    const bool down = b.ctl.contacts.on_ground[k] && !carried && !mt.fell && !b.limp;
+    if (down && !mt.foot_was_down[k]) mt.foot_anchor[k] = sole;
+    if (!down && mt.foot_was_down[k]) mt.foot_slide_closed[k] = mt.foot_slide[k];
+    if (down) mt.foot_slide[k] = mt.foot_slide_closed[k] + (sole - mt.foot_anchor[k]).norm();
+    mt.foot_was_down[k] = down;
+  }
   const Eigen::Vector3d com = eng::physics::subtree_com(m, d, pelvis);
   if (mt.have_com) mt.max_com_speed = std::max(mt.max_com_speed, (com - mt.last_com).norm() / dt);
   mt.last_com = com;

@@ -433,7 +433,8 @@ nlohmann::json world_report(const World& w) {
                       {"stance_rear_top_m", b.stance.rear_top},
                       {"trace", m.trace},
                       {"feet_start", {std::vector<double>(m.foot0[0].data(), m.foot0[0].data() + 3),
-                                      std::vector<double>(m.foot0[1].data(), m.foot0[1].data() + 3)}}});
+                                      std::vector<double>(m.foot0[1].data(), m.foot0[1].data() + 3)}},
+                      {"feet_slide_m", {m.foot_slide[0], m.foot_slide[1]}}});
   }
   nlohmann::json r = {{"scenario", scenario_name(w.options.scenario_id)},
                       {"physics_steps", w.steps},

@@ -210,6 +210,37 @@ TEST(BalanceSteps, YinsForwardSidewaysLeftAndBackwardBarsAreSteppedOutOfOnSeeds1
     }
 }
 
+// The planted feet's slide (BoxerMetrics::foot_slide): a boxer standing in guard does not slide its feet (the metric
+// does not add up the contacts' jitter), and in a drill, where no step moves a foot, the slide summed over the
+// foot's plantings is at least how far the foot ended up from where it started (checked against the bodies'
+// positions). The rear hook's pivot slides the rear foot (docs/decisions/foot-slide.md): not a bar, a reading.
+TEST(FootSlide, AGuardStandsStillAndADrillsSlideIsAtLeastTheFootsDisplacement) {
+  const auto still = run({"--scenario", "stand", "--seed", "1"}, 10.0);
+  ASSERT_FALSE(still.fell);
+  EXPECT_LT(still.foot_slide[0], 0.005);
+  EXPECT_LT(still.foot_slide[1], 0.005);
+
+  auto o = boxing::parse_cli({"--scenario", "stand", "--seed", "1", "--clip", "rear_hook"});
+  ASSERT_TRUE(o.ok()) << o.error();
+  auto w = boxing::make_world(*o);
+  ASSERT_TRUE(w.ok()) << w.error();
+  boxing::World& world = **w;
+  const boxing::Boxer& b = world.boxers[0];
+  const auto sole = [&](int k) {  // the sole centre, as the metric reads it
+    const auto& x = world.data.x[b.bodies.body[b.bones.foot[k]]];
+    return Eigen::Vector2d((x.p + x.R * b.settings.tuning.foot.centre).head<2>());
+  };
+  boxing::step_world(world);
+  const Eigen::Vector2d start[2] = {sole(0), sole(1)};
+  for (int i = 1; i < int(10.0 / boxing::kPhysicsDt); ++i) boxing::step_world(world);
+  ASSERT_FALSE(b.metrics.fell);
+  EXPECT_EQ(b.metrics.balance_steps + b.metrics.steps_taken, 0);
+  for (int k = 0; k < 2; ++k) {
+    const double moved = (sole(k) - start[k]).norm();
+    EXPECT_GE(b.metrics.foot_slide[k], moved - 1e-3) << "foot " << k << " moved " << moved << " m";
+  }
+}
+
 TEST(BalanceSteps, AStandingBoxerTakesNone) {
   // Standing in guard for 10 s: the capture point never leaves the soles, no step is taken for nothing.
   const auto m = run({"--scenario", "stand", "--seed", "4", "--stepping", "on"}, 10.0);
