@@ -16,6 +16,10 @@ PoseSource PoseSource::looping_clip(const eng::anim::Clip& clip) {
 PoseSource PoseSource::graph_walk(const eng::anim::MotionGraph& graph, uint64_t seed) {
   PoseSource s;
   s.walker_ = std::make_unique<eng::anim::GraphWalker>(graph, seed, kGuardClip);
+  // The clips face the opponent; the yaw the graph's transitions accumulate (a random walk) is steered away, as a
+  // player or an AI keeps a boxer facing: without it a walk's desired heading wandered 40 deg in 100 s and the
+  // planted feet, which cannot follow it without steps, pivoted after it and slid off their crates.
+  s.walker_->heading_hold = kHeadingHold;
   s.graph_ = &graph;
   s.init_slots(graph.clips.size());
   return s;

@@ -423,6 +423,7 @@ void GraphWalker::tick(double dt, PoseSample* out) {
   }
   constexpr double h = 1e-4;
   PoseSample& s = *out;
+  if (heading_hold > 0.0) hold_heading(dt);
   world_pose_at(0.0, s.pose);
   world_pose_at(-h, fd_a_);
   world_pose_at(h, fd_b_);
@@ -430,6 +431,22 @@ void GraphWalker::tick(double dt, PoseSample* out) {
   s.angular_velocity.resize(s.pose.rotation.size());
   for (size_t i = 0; i < s.pose.rotation.size(); ++i)
     s.angular_velocity[i] = angular_velocity_between(fd_a_.rotation[i], fd_b_.rotation[i], 2 * h);
+}
+
+void GraphWalker::hold_heading(double dt) {
+  const double turn_by = -(1.0 - std::exp(-dt * heading_hold)) * std::remainder(T_.theta, 2.0 * M_PI);
+  world_pose_at(0.0, fd_a_);
+  // A rotation by turn_by about the root's floor position c: x -> R x + (c - R c), composed before every frame the
+  // walk samples through (the clip's, the one it blends from, the one it left).
+  Align2D turn;
+  turn.theta = turn_by;
+  const Vector3d c(fd_a_.root_position.x(), fd_a_.root_position.y(), 0.0);
+  const Vector3d Rc = turn.apply(c);
+  turn.tx = c.x() - Rc.x();
+  turn.ty = c.y() - Rc.y();
+  T_ = turn.then(T_);
+  prev_T_ = turn.then(prev_T_);
+  blend_.T = turn.then(blend_.T);
 }
 
 PoseSample GraphWalker::tick(double dt) {

@@ -171,6 +171,11 @@ class GraphWalker {
   // At the end of a clip whose continuations include itself (guard, down loops): probability of
   // looping; otherwise the other continuations are drawn uniformly.
   double loop_probability = 0.35;
+  // Heading hold (1/s; 0 = off, Kovar's walk): the yaw the transitions' 2D alignments accumulate (T's theta; a random
+  // walk, 40 deg in 100 s of boxing clips) is steered back toward the clips' own facing at this rate, the walk's frame
+  // turned about the root's floor position (the root does not jump). For clips authored facing one way (a boxer
+  // toward its opponent) whose feet cannot follow a drifting heading.
+  double heading_hold = 0.0;
 
  private:
   struct Blend {
@@ -189,6 +194,7 @@ class GraphWalker {
   void decide();
   bool plan_to(const std::vector<char>& target);
   void world_pose_at(double dt_offset, Pose& out) const;
+  void hold_heading(double dt);  // heading_hold's turn of the walk's frames, before the tick samples them
 
   const MotionGraph* g_;
   std::mt19937_64 rng_;

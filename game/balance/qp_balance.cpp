@@ -292,6 +292,15 @@ void actuate(QpBalance& q, BalanceTick& tick) {
   // plan mostly tracks the pose. (Standing, walking and fighting: a few ticks a minute, one foot's edge.)
   eng::control::BalanceQpParams& params = q.solve_params;
   params = q.params;
+  // The feet's joint limits kept in the plan (BalanceQpParams::w_limit) while the boxer is calm: the step's stop at the
+  // rear ankle's limits (its twist as the cross turns the leg over a planted foot) yanked the foot past its friction,
+  // and punch by punch the foot walked off its crate. Not in a push's recovery: the step's stops there are part of how
+  // the body catches itself (priced at every speed, 155-157 of 224 pushes survived against 165-174), nor in the
+  // player's hands. Measured: docs/decisions/foot-slide.md.
+  for (int k = 0; k < 2; ++k) in.limit_bodies.push_back(b.bodies.body[feet[k]]);
+  const double calm = std::clamp(2.0 - vcom.head<2>().norm() / tq.limit_calm_speed, 0.0, 1.0);
+  const bool upset = b.ctl.balance_steps.recovering || b.ctl.balance_steps.step.active || d.time < b.ctl.handled_until;
+  params.w_limit = upset ? 0.0 : tq.limit_weight * calm;
   if (kudoh) params.w_force *= tq.com_weight, params.w_moment *= tq.com_weight;
   // During a balance step's swing the com and momentum tasks are priced lower: held to the stance foot's support they
   // threw the upper body against the fall the step is there to catch (docs/decisions/balance-steps.md).

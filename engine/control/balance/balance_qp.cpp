@@ -224,6 +224,27 @@ void balance_qp_solve(const physics::Model& m, const physics::Data& d, const Bal
     }
     add_task(3, t.acc - bias, t.weight);
   }
+  // Joint limits (BalanceQpParams::w_limit): the step's limit rows of this articulation, J sparse over the joint's DoFs
+  // with J v = dC/dt (the row's Jdot v left out: the swing axis turns slowly).
+  if (p.w_limit > 0.0) {
+    for (const physics::ConstraintRow& r : d.rows) {
+      if (r.kind != physics::ConstraintRow::Limit || r.C > p.limit_margin || r.nz_count == 0) continue;
+      const int* idx = d.J_idx.data() + r.nz_begin;
+      const double* jv = d.J_val.data() + r.nz_begin;
+      if (idx[0] < b0 || idx[0] >= b0 + n) continue;
+      if (!in.limit_bodies.empty() &&
+          std::find(in.limit_bodies.begin(), in.limit_bodies.end(), m.dof_body[idx[r.nz_count - 1]]) == in.limit_bodies.end())
+        continue;
+      double C_dot = 0.0;
+      for (int a = 0; a < r.nz_count; ++a) C_dot += jv[a] * d.v[idx[a]];
+      const double acc = p.limit_kp * (p.limit_margin - r.C) - p.limit_kd * C_dot;
+      if (acc <= 0.0) continue;
+      for (int a = 0; a < r.nz_count; ++a) {
+        ws.g[idx[a] - b0] += p.w_limit * jv[a] * acc;
+        for (int c = 0; c < r.nz_count; ++c) H(idx[a] - b0, idx[c] - b0) += p.w_limit * jv[a] * jv[c];
+      }
+    }
+  }
   // Contact points stay put (damped): a heavily weighted task rather than an equality, because a flat foot's
   // four corners give 12 dependent rows, and a foot touching at one corner or edge must stay free to roll flat
   // about it (its orientation task does that).

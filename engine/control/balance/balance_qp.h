@@ -81,8 +81,10 @@ struct BalanceQpInput {
   std::vector<QpContact> contacts;
   std::vector<QpAngularTask> angular;
   std::vector<QpPointTask> points;
+  // Bodies whose joint limits the plan keeps off (BalanceQpParams::w_limit); empty: every joint of the articulation.
+  std::vector<int> limit_bodies;
   void clear() {
-    contacts.clear(), angular.clear(), points.clear();
+    contacts.clear(), angular.clear(), points.clear(), limit_bodies.clear();
   }
 };
 
@@ -94,6 +96,15 @@ struct BalanceQpParams {
   double w_torque = 0.0;    // weight on the joint torques (per (N m)^2): minimum effort, bounds internal forces
   double w_hold = 1e4;      // weight of "contact points do not accelerate" (per (m/s^2)^2)
   double hold_damping = 20.0;  // 1/s: the held points' target acceleration is -hold_damping * their velocity
+  // Joint limits (the step's limit rows, built by step1: a ball joint's swing cone and twist, a hinge's range). The
+  // step stops a joint at its limit with an impulse the plan did not count on: at the rear ankle during a cross it
+  // yanked the foot off its planned contact forces and the foot slid. A joint within limit_margin of a limit gets a
+  // task: its limit coordinate C accelerates at limit_kp (limit_margin - C) - limit_kd dC/dt (back inside the
+  // margin), priced w_limit per (rad/s^2)^2; none where that is negative (moving off the limit: free). 0 = off.
+  double w_limit = 0.0;
+  double limit_margin = 0.05;  // rad
+  double limit_kp = 400.0;     // 1/s^2
+  double limit_kd = 40.0;      // 1/s
   // Root assist (the paper's root spring, section V: "for some dynamic balance situations a root spring applies
   // torques at the root, however these are torque limited"), here as an unknown of the QP: an external torque on
   // the root body, priced at w_root_assist per (N m)^2, so the plan takes it only where the ground reaction cannot

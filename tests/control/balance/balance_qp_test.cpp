@@ -35,11 +35,13 @@ struct Stand {
   Data d;
   int torso = 0, arm = 0;
   BalanceQpInput in;
-  Stand(double arm_angle = 0.0) {
+  // arm_upper: the hinge limited to [-2, arm_upper] (NaN: unlimited).
+  explicit Stand(double arm_angle = 0.0, double arm_upper = std::nan("")) {
     const Vec3 he(0.1, 0.1, 0.05);
     torso = m.add_body(make_body("torso", 0, JointType::Free, at({0, 0, 0.05}), 10.0, Vec3::Zero(), box_inertia(10.0, he)));
     Body a = make_body("arm", torso, JointType::Hinge, at({0, 0, 0.05}), 2.0, Vec3(0.2, 0, 0), rod_inertia_z(2.0, 0.4));
     a.axis = Vec3::UnitY();
+    if (!std::isnan(arm_upper)) a.limited = true, a.lower = -2.0, a.upper = arm_upper;
     arm = m.add_body(a);
     m.finalize();
     d = make_data(m);
@@ -247,4 +249,31 @@ TEST(BalanceQp, ARelativePointTaskIsMetRelativeToItsReferenceWhileTheBaseRecoils
   EXPECT_GT((a_hinge - s.m.gravity).norm(), 0.1) << "the torso recoils from the arm";
   EXPECT_GT(((a_tip - s.m.gravity) - t.acc).norm(), 0.1) << "so the tip's own acceleration is not the asked one";
   EXPECT_LT(out.root_residual, 1e-6);
+}
+
+TEST(BalanceQp, AJointNearItsLimitIsPlannedToStopShortOfItOnlyWhileItApproaches) {
+  // The arm's hinge limited at 0.5 rad, the arm at 0.47 (C = 0.03, inside the default 0.05 margin), its task asking
+  // 20 rad/s^2 further in. The step's limit rows (step1) tell the plan where the limits are. Approaching at 1 rad/s the
+  // limit task asks C'' = kp (margin - C) - kd C' = 400 * 0.02 + 40 * 1 = 48 rad/s^2 back, priced 100 against the
+  // arm's 1: the least-squares compromise is (20 - 100 * 48) / 101 = -47.3 rad/s^2 of hinge acceleration.
+  auto hinge_acc = [](double qdot, double w_limit, bool arm_listed) {
+    Stand s(0.47, 0.5);
+    s.d.v[s.m.bodies[s.arm].v_index] = qdot;
+    step1(s.m, s.d);
+    s.in.angular[1].alpha = Vec3(0, 20.0, 0);
+    if (!arm_listed) s.in.limit_bodies = {s.torso};
+    BalanceQpParams p;
+    p.w_limit = w_limit;
+    BalanceQp ws;
+    BalanceQpResult out;
+    eng::control::balance_qp_solve(s.m, s.d, s.in, p, ws, out);
+    EXPECT_LT(out.root_residual, 1e-6);
+    return out.qacc[s.m.bodies[s.arm].v_index];
+  };
+  EXPECT_GT(hinge_acc(1.0, 0.0, true), 15.0) << "without the task the plan drives the arm into its stop";
+  EXPECT_NEAR(hinge_acc(1.0, 100.0, true), (20.0 - 100.0 * 48.0) / 101.0, 1.0);
+  // Moving off the limit (C' = +1: the task would ask 8 - 40 < 0): no task, the plan as without it.
+  EXPECT_NEAR(hinge_acc(-1.0, 100.0, true), hinge_acc(-1.0, 0.0, true), 1e-9);
+  // A body not in BalanceQpInput::limit_bodies: its limits are not the plan's.
+  EXPECT_NEAR(hinge_acc(1.0, 100.0, false), hinge_acc(1.0, 0.0, false), 1e-9);
 }
