@@ -17,7 +17,8 @@
 //       sum_i w_i |J_i qacc + Jdot_i v - a_i|^2 + eps |qacc|^2                      (tracking)
 //     + w_F |sum f_c - F_des|^2 + w_N |sum (p_c - com) x f_c - N_des|^2 + eps' |beta|^2   (ground reaction)
 // (a_i: each bone's desired world angular acceleration -- the inertial servo's eq. 3 as an acceleration --,
-// point accelerations, e.g. a swing foot, and, heavily weighted, zero acceleration of every contact point;
+// point accelerations, e.g. a swing foot, heavily weighted, zero acceleration of every contact point, and, near a
+// joint limit the step will enforce, the limit coordinate's acceleration back inside it (w_limit);
 // F_des = m (a_com_des - g), Kudoh's com acceleration as a PD target; N_des the desired rate of the centroidal
 // angular momentum) subject to, exactly,
 //       M_root qacc + c_root = (J^T f)_root      (Newton-Euler of the whole body: the floating base is unactuated;
