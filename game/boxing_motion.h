@@ -17,7 +17,8 @@ namespace boxing {
 inline constexpr const char* kGuardClip = "guard";
 
 // A boxing walk's heading hold (GraphWalker::heading_hold, 1/s: a 5 s time constant). Measured on the 600 s graph
-// walks, seeds 1-24 (docs/decisions/foot-slide.md): the rear foot's slide median 0.50 -> 0.41 m, max 0.92 -> 0.56 m.
+// walks, seeds 1-24, with the feet's limits in the plan (docs/decisions/foot-slide.md): 24 of 24 stand (without it 23),
+// the rear foot's slide median 0.27 m (0.41), max 0.73 m (0.96).
 inline constexpr double kHeadingHold = 0.2;
 
 // The boxer's leg bones as content/boxer/boxer.gltf names them ([0] left, the orthodox lead; [1] right).

@@ -64,7 +64,8 @@ struct BalanceQpTuning {
   double arm_return_com_speed = 0.15;  // m/s
   double arm_return_after = 1.0;       // s
   // The feet's joint limits in the plan (BalanceQpParams::w_limit, actuate): priced limit_weight per (rad/s^2)^2 while
-  // the com is slower than limit_calm_speed, fading to none at twice that, none in a balance step's recovery.
+  // the com is slower than limit_calm_speed, fading to none at twice that, none in a balance step's recovery or in the
+  // player's hands.
   double limit_weight = 100.0;        // (10: the cross drill's rear foot slid twice as far; 1000 as 100)
   double limit_calm_speed = 0.3;      // m/s
   double stance_drop = 0.04;          // m, the desired root this much below the clip's (knees bent deeper)
