@@ -45,8 +45,9 @@ struct BoxerMetrics {
   double max_com_speed = 0.0;
   // How far each foot's sole centre slid over the ground while planted, upright (m): per planting (the foot on the
   // ground, no step carrying it) the distance from where it was set down to where it is or lifted, summed over the
-  // plantings (net, so the contact's sub-millimetre jitter does not add up). The graph walks' rear foot slides
-  // 0.2-1.0 m in 10 minutes under the rear-hand punches' pivots (docs/decisions/foot-slide.md).
+  // plantings (net, so the contact's sub-millimetre jitter does not add up). The graph walks' rear foot slid
+  // 0.2-1.0 m in 10 minutes under the rear-hand punches until the plan kept the ankles off their limits; 0.05-0.5 m
+  // since (docs/decisions/foot-slide.md).
   double foot_slide[2] = {0.0, 0.0};
   double foot_slide_closed[2] = {0.0, 0.0};  // the plantings that ended
   Eigen::Vector2d foot_anchor[2] = {Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero()};  // where this planting began
