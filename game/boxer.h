@@ -40,6 +40,15 @@ struct BoxerMetrics {
   Eigen::Vector3d fell_pelvis = Eigen::Vector3d::Zero();  // where the pelvis was at the fall (world, m)
   double time_upright = 0.0;
   int steps_taken = 0, steps_skipped = 0;  // balance QP: the clip's steps lifted off / held down (gate_lift_off)
+  // How far the clip's steps carried the feet: per step lifted (its clip travel over kStepTravelMin), the foot's
+  // displacement from lift-off to its next planting along the clip's travel, as a fraction of it (1: where the clip
+  // puts it). Summed here, the report gives the mean (boxers[i].step_travel).
+  static constexpr double kStepTravelMin = 0.08;  // m
+  int step_travel_count = 0;
+  double step_travel_sum = 0.0, step_travel_sq = 0.0;
+  bool step_pending[2] = {false, false};
+  Eigen::Vector2d step_from[2] = {Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero()};  // sole centre at lift-off
+  Eigen::Vector2d step_travel[2] = {Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero()};  // the clip's (world)
   int balance_steps = 0, return_steps = 0;  // balance QP: steps the balance took (balance_step.h), steps back to the stance
   int most_steps_in_recovery = 0;           // the longest multi-step recovery
   double max_com_speed = 0.0;
@@ -130,7 +139,7 @@ struct BoxerScratch {
   std::vector<Eigen::Quaterniond> W_a;  // actual world orientation per bone
   std::vector<Eigen::Vector3d> omega_a;  // actual world angular velocity per bone
   std::vector<Eigen::Vector3d> q_joint, spring_ref;  // implicit servo: joint rotations, spring references
-  std::vector<Eigen::Vector2d> hull, pts;  // lift-off gate, balance steps
+  std::vector<Eigen::Vector2d> hull, pts, landing;  // lift-off gate (landing: a quick step's sole), balance steps
   std::vector<Eigen::Vector2d> sole_corners[2], stance_hull;  // balance steps: the soles on the ground, one's hull
 };
 

@@ -60,7 +60,15 @@ void boxer_measure(const eng::physics::Model& m, const eng::physics::Data& d, co
     const eng::control::BalanceStep& step = b.ctl.balance_steps.step;
     const bool carried = b.ctl.step[k].active || (step.active && step.foot == k);
     const bool down = b.ctl.contacts.on_ground[k] && !carried && !mt.fell && !b.limp;
-    if (down && !mt.foot_was_down[k]) mt.foot_anchor[k] = sole;
+    if (down && !mt.foot_was_down[k]) {
+      mt.foot_anchor[k] = sole;
+      if (mt.step_pending[k]) {  // a clip's step planted: how much of its travel it covered
+        const Eigen::Vector2d& u = mt.step_travel[k];
+        const double f = (sole - mt.step_from[k]).dot(u) / u.squaredNorm();
+        ++mt.step_travel_count, mt.step_travel_sum += f, mt.step_travel_sq += f * f;
+        mt.step_pending[k] = false;
+      }
+    }
     if (!down && mt.foot_was_down[k]) mt.foot_slide_closed[k] = mt.foot_slide[k];
     if (down) mt.foot_slide[k] = mt.foot_slide_closed[k] + (sole - mt.foot_anchor[k]).norm();
     mt.foot_was_down[k] = down;

@@ -67,17 +67,35 @@ void gate_lift_off(const eng::physics::Model& m, const eng::physics::Data& d, co
     // The other (stance) foot's ground contacts and the capture point.
     const std::vector<Eigen::Vector2d>& stance = b.ctl.contacts.ground_points[1 - k];
     Eigen::Vector2d xi = Eigen::Vector2d::Zero();
+    eng::control::ClipStep step;
+    const eng::control::Touchdown td = touchdown_of(skel, b, k);
     if (stance.size() >= 2) {
       const Eigen::Vector3d com = eng::physics::subtree_com(m, d, pelvis);
       const eng::physics::Vec6 h = eng::physics::spatial_momentum(m, d, pelvis);
       const Eigen::Vector3d vcom = h.tail<3>() / b.control_body.total_mass;
       const double z = std::max(0.3, com.z() - b.ctl.support_base);
       xi = eng::control::capture_point(com.head<2>(), vcom.head<2>(), z);
+      // The quick-step test's landing: the clip's touch-down placed from where the ankle is now, on the stance's
+      // heading (the sole's rectangle; plan_steps may still shift it onto a better foothold).
+      const int fb = b.bodies.body[b.bones.foot[k]];
+      const Eigen::Rotation2Dd heading(b.stance.heading), yaw(b.stance.heading + td.yaw);
+      const Eigen::Vector2d ankle = d.x[fb].p.head<2>() + heading * td.travel;
+      const eng::control::SoleShape& sole = b.settings.tuning.step.foothold.sole;
+      b.scratch.landing.clear();
+      for (double x : {sole.heel, sole.toe})
+        for (double y : {-sole.half_width, sole.half_width}) b.scratch.landing.push_back(ankle + yaw * Eigen::Vector2d(x, y));
+      step.landing = &b.scratch.landing;
+      step.omega = eng::control::lip_omega(z);
     }
-    const double swing_left = touchdown_of(skel, b, k).ahead;
-    const eng::control::GateEvent e =
-        eng::control::lift_off_gate_decide(b.ctl.gate[k], swing[k], stance, xi, swing_left, dt, b.settings.tuning.gate, b.scratch.hull);
-    if (e == eng::control::GateEvent::StepTaken) ++b.metrics.steps_taken;
+    const eng::control::GateEvent e = eng::control::lift_off_gate_decide(
+        b.ctl.gate[k], swing[k], stance, xi, td.ahead, dt, b.settings.tuning.gate, b.scratch.hull, step, &b.scratch.pts);
+    if (e == eng::control::GateEvent::StepTaken) {
+      ++b.metrics.steps_taken;
+      const int fb = b.bodies.body[b.bones.foot[k]];
+      b.metrics.step_travel[k] = Eigen::Rotation2Dd(b.stance.heading) * td.travel;
+      b.metrics.step_from[k] = (d.x[fb].p + d.x[fb].R * b.settings.tuning.foot.centre).head<2>();
+      b.metrics.step_pending[k] = b.metrics.step_travel[k].norm() > BoxerMetrics::kStepTravelMin;
+    }
     if (e == eng::control::GateEvent::StepSkipped) ++b.metrics.steps_skipped;
   }
 }

@@ -382,6 +382,14 @@ nlohmann::json qp_report(const Boxer& b) {
   const eng::core::LatencyHistogram& h = std::get<QpBalance>(b.ctl.balance).solve_us;
   return {{"solves", h.count()}, {"solve_us_median", h.percentile(50)}, {"solve_us_p95", h.percentile(95)}};
 }
+
+// How far the clip's steps carried the feet (BoxerMetrics::step_travel_*): count, mean and spread of the fraction.
+nlohmann::json step_travel_report(const BoxerMetrics& m) {
+  const int n = m.step_travel_count;
+  const double mean = n > 0 ? m.step_travel_sum / n : 0.0;
+  const double sd = n > 1 ? std::sqrt(std::max(0.0, (m.step_travel_sq - n * mean * mean) / (n - 1))) : 0.0;
+  return {{"steps", n}, {"mean_fraction", mean}, {"sd_fraction", sd}};
+}
 }  // namespace
 
 nlohmann::json world_report(const World& w) {
@@ -405,6 +413,7 @@ nlohmann::json world_report(const World& w) {
                       {"fell_at_s", m.fell_at},
                       {"steps_taken", m.steps_taken},
                       {"steps_skipped", m.steps_skipped},
+                      {"step_travel", step_travel_report(m)},
                       {"balance_steps", m.balance_steps},
                       {"return_steps", m.return_steps},
                       {"most_steps_in_recovery", m.most_steps_in_recovery},

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "engine/control/biped/balance_step.h"
 #include "engine/control/biped/support_polygon.h"
 #include "engine/control/servo/orientation_error.h"
 #include "engine/control/servo/person_space.h"
@@ -175,6 +176,17 @@ void actuate(QpBalance& q, BalanceTick& tick) {
     const double kp = tq.com_omega * tq.com_omega, kd = 2.0 * tq.com_omega;
     in.com_acc = -kp * e - kd * (vcom - v_d);
     if (in.com_acc.norm() > tq.max_com_acc) in.com_acc *= tq.max_com_acc / in.com_acc.norm();
+    // A quick step's swing (lift_off_gate.h: capturable once the foot lands, not over the stance foot): the com falls
+    // toward the landing foot as the linear inverted pendulum does about the stance foot's centre of pressure nearest
+    // the capture point, com'' = omega^2 (com - p) (Pratt et al. 2006 eq. 3). Held to the target over the stance foot
+    // instead, the plan asked the ground for what it cannot give and bought it from the root assist.
+    for (int k = 0; k < 2; ++k) {
+      if (!b.ctl.gate[k].lifted || !b.ctl.gate[k].quick || loaded[k] || in.contacts.empty()) continue;
+      const double omega = eng::control::lip_omega(std::max(0.3, com_a.z() - b.ctl.support_base));
+      const Eigen::Vector2d xi = com_a.head<2>() + vcom.head<2>() / omega;
+      const Eigen::Vector2d p = eng::control::clamp_to_polygon(q.hull, xi, 0.0);
+      in.com_acc.head<2>() = omega * omega * (com_a.head<2>() - p);
+    }
     const ph::Vec6 h = ph::spatial_momentum(m, d, pelvis);
     const Eigen::Vector3d k_com = h.head<3>() - com_a.cross(h.tail<3>());
     in.momentum_rate = -tq.momentum_damping * k_com;

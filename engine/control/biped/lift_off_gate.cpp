@@ -1,5 +1,6 @@
 #include "engine/control/biped/lift_off_gate.h"
 
+#include "engine/control/biped/balance_step.h"
 #include "engine/control/biped/support_polygon.h"
 
 namespace eng::control {
@@ -17,13 +18,28 @@ bool lift_off_gate_due(LiftGate& g, bool& swing, bool active) {
   return true;
 }
 
+bool quick_step_capturable(const std::vector<Eigen::Vector2d>& stance_hull, const Eigen::Vector2d& xi,
+                           double swing_left, const ClipStep& step, const LiftOffGateTuning& t,
+                           std::vector<Eigen::Vector2d>& pts, std::vector<Eigen::Vector2d>& hull) {
+  if (!t.quick || !step.landing || step.landing->empty() || stance_hull.empty() || swing_left > t.quick_max_swing)
+    return false;
+  const Eigen::Vector2d p = clamp_to_polygon(stance_hull, xi, 0.0);
+  const Eigen::Vector2d xi_T = capture_point_after(xi, p, step.omega, swing_left);
+  pts.assign(stance_hull.begin(), stance_hull.end());
+  pts.insert(pts.end(), step.landing->begin(), step.landing->end());
+  convex_hull_2d_in_place(pts, hull);
+  return (clamp_to_polygon(hull, xi_T, t.quick_margin) - xi_T).norm() < 1e-9;
+}
+
 GateEvent lift_off_gate_decide(LiftGate& g, bool& swing, const std::vector<Eigen::Vector2d>& stance_points,
                                const Eigen::Vector2d& xi, double swing_left, double dt, const LiftOffGateTuning& t,
-                               std::vector<Eigen::Vector2d>& hull) {
+                               std::vector<Eigen::Vector2d>& hull, const ClipStep& step,
+                               std::vector<Eigen::Vector2d>* pts) {
   bool open = false;
   if (stance_points.size() >= 2) {
     convex_hull_2d(stance_points, hull);
     open = (clamp_to_polygon(hull, xi, t.margin) - xi).norm() < 1e-9;  // inside the shrunk hull: clamping is a no-op
+    if (!open && pts) g.quick = open = quick_step_capturable(hull, xi, swing_left, step, t, *pts, hull);
   }
   if (open && swing_left >= t.min_swing) {
     g.lifted = true, g.holding = false;

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "engine/control/biped/capture_point.h"
+#include "engine/control/biped/support_polygon.h"
 
 using namespace eng::control;
 using V = Eigen::Vector2d;
@@ -123,4 +124,65 @@ TEST(CapturePoint, ALipmStartedThereComesToRestOverIt) {
   }
   EXPECT_NEAR(x, p, 2e-3);
   EXPECT_NEAR(v, 0.0, 1e-2);
+}
+
+// QUICK STEPS. The stance sole above, the capture point 14 cm past its toe (xi = (0.40, 0)): the weight-shift test
+// holds. With omega = 3.5 /s the capture point at the touch-down T s later is, in closed form (the centre of pressure
+// at the toe, p = (0.26, 0)), xi(T) = 0.26 + 0.14 e^(3.5 T): 0.497 m at T = 0.15 s, 0.633 m at T = 0.28 s.
+namespace {
+std::vector<V> sole_at(double heel_x) {
+  return {V(heel_x, -0.05), V(heel_x + 0.26, -0.05), V(heel_x + 0.26, 0.05), V(heel_x, 0.05)};
+}
+}  // namespace
+
+TEST(LiftOffGate, AQuickStepOpensWhenTheCapturePointAtTouchDownLiesInTheNewSupportAndHoldsWhenTheStepIsShort) {
+  LiftOffGateTuning t;
+  std::vector<V> hull, pts;
+  // A shuffle forward (landing sole from 0.45 to 0.71 m; xi(0.15) = 0.497 between the feet): opens, as a quick step.
+  {
+    LiftGate g;
+    bool swing = true;
+    const std::vector<V> landing = sole_at(0.45);
+    const GateEvent e = lift_off_gate_decide(g, swing, stance_sole(), V(0.40, 0.0), 0.15, 0.01, t, hull, {&landing, 3.5}, &pts);
+    EXPECT_EQ(e, GateEvent::StepTaken);
+    EXPECT_TRUE(swing);
+    EXPECT_TRUE(g.quick);
+  }
+  // The same body, a short step (landing toe at 0.36 m, the capture point reaches 0.497): held down.
+  {
+    LiftGate g;
+    bool swing = true;
+    const std::vector<V> landing = sole_at(0.10);
+    const GateEvent e = lift_off_gate_decide(g, swing, stance_sole(), V(0.40, 0.0), 0.15, 0.01, t, hull, {&landing, 3.5}, &pts);
+    EXPECT_EQ(e, GateEvent::None);
+    EXPECT_FALSE(swing);
+    EXPECT_TRUE(g.holding);
+  }
+  // Without the quick test (no landing given, or LiftOffGateTuning::quick off) the shuffle is held as before.
+  {
+    LiftGate g;
+    bool swing = true;
+    EXPECT_EQ(lift_off_gate_decide(g, swing, stance_sole(), V(0.40, 0.0), 0.15, 0.01, t, hull), GateEvent::None);
+    LiftOffGateTuning off = t;
+    off.quick = false;
+    LiftGate g2;
+    bool swing2 = true;
+    const std::vector<V> landing = sole_at(0.45);
+    EXPECT_EQ(lift_off_gate_decide(g2, swing2, stance_sole(), V(0.40, 0.0), 0.15, 0.01, off, hull, {&landing, 3.5}, &pts),
+              GateEvent::None);
+  }
+}
+
+TEST(LiftOffGate, AQuickStepsSwingTimeDecidesHowFarTheCapturePointRunsBeforeTheFootLands) {
+  LiftOffGateTuning t;
+  std::vector<V> hull, pts, stance_hull;
+  convex_hull_2d(stance_sole(), stance_hull);
+  const std::vector<V> landing = sole_at(0.30);  // toe at 0.56 m
+  const ClipStep step{&landing, 3.5};
+  EXPECT_TRUE(quick_step_capturable(stance_hull, V(0.40, 0.0), 0.15, step, t, pts, hull));   // xi(T) = 0.497
+  EXPECT_FALSE(quick_step_capturable(stance_hull, V(0.40, 0.0), 0.28, step, t, pts, hull));  // xi(T) = 0.633
+  // Sideways the same: the capture point off the stance sole's side runs sideways, past a landing beside it.
+  const std::vector<V> beside = {V(0.0, 0.20), V(0.26, 0.20), V(0.26, 0.30), V(0.0, 0.30)};
+  EXPECT_TRUE(quick_step_capturable(stance_hull, V(0.13, 0.12), 0.15, {&beside, 3.5}, t, pts, hull));   // y(T) 0.17
+  EXPECT_FALSE(quick_step_capturable(stance_hull, V(0.13, 0.20), 0.15, {&beside, 3.5}, t, pts, hull));  // y(T) 0.30
 }
