@@ -51,8 +51,8 @@ inline constexpr double kStanceHalfLength = 0.20;  // m along the heading
 inline constexpr double kStanceHalfWidth = 0.12;   // m sideways
 inline constexpr double kBoxerSeparation = 1.20;   // pelvis to pelvis (m)
 // The match's: a straight punch reaches the other's head at full extension (the glove's centre 0.74 m ahead of the
-// chest; at 1.20 m it stopped 0.2 m short, in the guard). The boxers' steps do not carry them (the clips' quick
-// shuffles are held down by the lift-off gate), so the match starts at fighting distance.
+// chest; at 1.20 m it stopped 0.2 m short, in the guard). The boxers' steps barely carry them (the clips' quick
+// shuffles lift off, but the pressed sole drags: a tenth of the clip's travel), so the match starts at fighting distance.
 inline constexpr double kFightSeparation = 0.95;
 
 }  // namespace boxing
