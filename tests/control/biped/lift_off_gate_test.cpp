@@ -133,18 +133,22 @@ namespace {
 std::vector<V> sole_at(double heel_x) {
   return {V(heel_x, -0.05), V(heel_x + 0.26, -0.05), V(heel_x + 0.26, 0.05), V(heel_x, 0.05)};
 }
+// That body's shuffle, 0.15 s to the touch-down, onto a landing sole whose heel is at heel_x.
+GateEvent decide_shuffle(double heel_x, const LiftOffGateTuning& t, LiftGate& g, bool& swing) {
+  std::vector<V> hull, pts;
+  const std::vector<V> landing = sole_at(heel_x);
+  return lift_off_gate_decide(g, swing, stance_sole(), V(0.40, 0.0), 0.15, 0.01, t, hull, {&landing, 3.5}, &pts);
+}
 }  // namespace
 
 TEST(LiftOffGate, AQuickStepOpensWhenTheCapturePointAtTouchDownLiesInTheNewSupportAndHoldsWhenTheStepIsShort) {
   LiftOffGateTuning t;
-  std::vector<V> hull, pts;
+  std::vector<V> hull;
   // A shuffle forward (landing sole from 0.45 to 0.71 m; xi(0.15) = 0.497 between the feet): opens, as a quick step.
   {
     LiftGate g;
     bool swing = true;
-    const std::vector<V> landing = sole_at(0.45);
-    const GateEvent e = lift_off_gate_decide(g, swing, stance_sole(), V(0.40, 0.0), 0.15, 0.01, t, hull, {&landing, 3.5}, &pts);
-    EXPECT_EQ(e, GateEvent::StepTaken);
+    EXPECT_EQ(decide_shuffle(0.45, t, g, swing), GateEvent::StepTaken);
     EXPECT_TRUE(swing);
     EXPECT_TRUE(g.quick);
   }
@@ -152,9 +156,7 @@ TEST(LiftOffGate, AQuickStepOpensWhenTheCapturePointAtTouchDownLiesInTheNewSuppo
   {
     LiftGate g;
     bool swing = true;
-    const std::vector<V> landing = sole_at(0.10);
-    const GateEvent e = lift_off_gate_decide(g, swing, stance_sole(), V(0.40, 0.0), 0.15, 0.01, t, hull, {&landing, 3.5}, &pts);
-    EXPECT_EQ(e, GateEvent::None);
+    EXPECT_EQ(decide_shuffle(0.10, t, g, swing), GateEvent::None);
     EXPECT_FALSE(swing);
     EXPECT_TRUE(g.holding);
   }
@@ -167,9 +169,7 @@ TEST(LiftOffGate, AQuickStepOpensWhenTheCapturePointAtTouchDownLiesInTheNewSuppo
     off.quick = false;
     LiftGate g2;
     bool swing2 = true;
-    const std::vector<V> landing = sole_at(0.45);
-    EXPECT_EQ(lift_off_gate_decide(g2, swing2, stance_sole(), V(0.40, 0.0), 0.15, 0.01, off, hull, {&landing, 3.5}, &pts),
-              GateEvent::None);
+    EXPECT_EQ(decide_shuffle(0.45, off, g2, swing2), GateEvent::None);
   }
 }
 
