@@ -189,7 +189,7 @@ void take_balance_steps(const eng::physics::Model& m, const eng::physics::Data& 
       const eng::control::StepLanding land = eng::control::place_balance_step(
           b.settings.placement, com.head<2>(), vcom, omega, s.from, sole[1 - s.foot], stance_hull, b.stance.heading,
           &b.ctl.step_lqr, left);
-      eng::control::replan_balance_step(s, land.to, ground, g, b.settings.tuning.step.foothold, t);
+      eng::control::replan_balance_step(s, land.to, ground, g, t.foothold, t);
     }
     if (down || s.elapsed > s.duration + t.late) {
       s.active = false;
@@ -212,7 +212,7 @@ void take_balance_steps(const eng::physics::Model& m, const eng::physics::Data& 
           b.settings.placement, com.head<2>(), vcom, omega, sole[k], sole[1 - k], stance_hull, b.stance.heading,
           &b.ctl.step_lqr, t);
       eng::control::start_balance_step(s, k, false, sole[k], land.to, yaw[k], land.duration, ground, g,
-                                       b.settings.tuning.step.foothold);
+                                       t.foothold);
       ++st.steps_in_recovery;
       st.recovering = true;
       ++b.metrics.balance_steps;
@@ -254,7 +254,7 @@ void take_balance_steps(const eng::physics::Model& m, const eng::physics::Data& 
     } else if (eng::control::outside_distance(other, xi) < -t.return_shift_margin) {
       pose_fk(desc.skeleton, b.desired.pose, b.scratch.fk_W, b.scratch.fk_P);
       eng::control::start_balance_step(s, r, true, sole[r], st.return_to, eng::control::heading_of(b.scratch.fk_W[feet[r]]),
-                                       t.return_duration, ground, g, b.settings.tuning.step.foothold);
+                                       t.return_duration, ground, g, t.foothold);
       ++b.metrics.return_steps;
       st.shifting = -1;
     } else {

@@ -176,13 +176,18 @@ void actuate(QpBalance& q, BalanceTick& tick) {
     const double kp = tq.com_omega * tq.com_omega, kd = 2.0 * tq.com_omega;
     in.com_acc = -kp * e - kd * (vcom - v_d);
     if (in.com_acc.norm() > tq.max_com_acc) in.com_acc *= tq.max_com_acc / in.com_acc.norm();
-    // A quick step's swing (lift_off_gate.h: capturable once the foot lands, not over the stance foot): the com falls
-    // toward the landing foot as the linear inverted pendulum does about the stance foot's centre of pressure nearest
-    // the capture point, com'' = omega^2 (com - p) (the LIP of Pratt et al. 2006). Held to the target over the stance
-    // foot instead, the plan asked the ground for what it cannot give and bought it from the root assist (walk seed 7,
-    // 20 s: rms 70 N m against 29).
+    // A quick step's swing (lift_off_gate.h: capturable once the foot lands, not over the stance foot) and a balance
+    // step's (balance_step.h: placed where the capture point will be at touch-down): the com falls toward the landing
+    // foot as the linear inverted pendulum does about the stance foot's centre of pressure nearest the capture point,
+    // com'' = omega^2 (com - p) (the LIP of Pratt et al. 2006), the model the landing was placed with. Held to the
+    // target over the stance foot instead, the plan asked the ground for what it cannot give: in the walks it bought
+    // it from the root assist (walk seed 7, 20 s: rms 70 N m against 29); in a push's crossing step it pulled the com
+    // back at 6 m/s^2 by folding the trunk over the hips (docs/decisions/balance-steps.md, fourth round).
+    const eng::control::BalanceStep& bs = b.ctl.balance_steps.step;
     for (int k = 0; k < 2; ++k) {
-      if (!b.ctl.gate[k].lifted || !b.ctl.gate[k].quick || loaded[k] || in.contacts.empty()) continue;
+      const bool quick_swing = b.ctl.gate[k].lifted && b.ctl.gate[k].quick && !loaded[k];
+      const bool balance_swing = bs.active && !bs.returning && bs.foot == k;
+      if (!(quick_swing || balance_swing) || in.contacts.empty()) continue;
       const double omega = eng::control::lip_omega(std::max(0.3, com_a.z() - b.ctl.support_base));
       const Eigen::Vector2d xi = com_a.head<2>() + vcom.head<2>() / omega;
       const Eigen::Vector2d p = eng::control::clamp_to_polygon(q.hull, xi, 0.0);
@@ -324,7 +329,11 @@ void actuate(QpBalance& q, BalanceTick& tick) {
   // Not during a balance step: its stance foot often rolls onto an edge or a corner (1-2 contact points), and with the
   // com task priced down there the plan asked one corner for 3.7 kN and launched the body 12 cm into the air
   // (0.2 s x 394 N to the right, seed 2); the step's own pricing (balance_step_com_scale) stays.
-  const bool unsupported = int(in.contacts.size()) < tq.min_support_contacts && !first_tick && !b.ctl.balance_steps.step.active;
+  // In a push's recovery (between its steps) a foot often lands on an edge or a corner; there one contact point a
+  // foot still carries the body, and the com task priced down let the plan drop the body's weight and tip it the way
+  // the posture pulled (planned 100 N up and 500 N forward against a desired 5 m/s^2 backward).
+  const int enough = b.ctl.balance_steps.recovering ? tq.recovery_support_contacts : tq.min_support_contacts;
+  const bool unsupported = int(in.contacts.size()) < enough && !first_tick && !b.ctl.balance_steps.step.active;
   if (unsupported) {
     params.w_force *= tq.few_contacts_task_scale;
     params.w_moment *= tq.few_contacts_task_scale;

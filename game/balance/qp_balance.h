@@ -36,7 +36,8 @@ struct BalanceQpTuning {
   double max_swing_speed = 3.0;       // m/s, the swing foot's feed-forward velocity bound
   double balance_step_omega = 25.0;   // rad/s, a balance step's swing tracked this stiffly (the servo's 15: landed late)
   double balance_step_speed = 4.5;    // m/s, its feed-forward velocity bound
-  double balance_step_com_scale = 0.1;  // the com / momentum tasks' price during its swing (1: fewer pushes survived)
+  // the com / momentum tasks' price during its swing (1: fewer pushes survived; 0.1 before the com fell as the LIP)
+  double balance_step_com_scale = 0.3;
   bool balance_step_relative = true;   // its swing foot's task relative to the pelvis (QpPointTask::ref_body)
   // The return step's weight shift (balance_step.h phase 3): the com target moves over the other foot at most this fast.
   // Set there at once, the com ran 0.4 m/s off the far side of a post-step stance 0.5 m wide and the return fell.
@@ -77,6 +78,7 @@ struct BalanceQpTuning {
   double losing_balance_tilt = 30.0 * M_PI / 180.0;  // rad
   int min_support_contacts = 3;       // fewer contact points in the plan: no support polygon ...
   double few_contacts_task_scale = 1e-2;  // ... and the com / momentum tasks priced this much lower
+  int recovery_support_contacts = 2;  // ... but in a push's recovery (balance steps) from fewer than this only
 };
 
 // The controller's state and workspace (inputs rebuilt every tick, capacity kept).

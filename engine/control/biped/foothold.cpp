@@ -27,7 +27,8 @@ void sample_rect(GroundHeight ground, const Eigen::Vector2d& ankle, double yaw, 
 bool foothold_ok(GroundHeight ground, const Eigen::Vector2d& ankle, double yaw, const FootholdParams& p) {
   const SoleShape& s = p.sole;
   double highest = -1e9;
-  sample_rect(ground, ankle, yaw, s.heel, s.toe, s.half_width, [&](double t) { highest = std::max(highest, t); });
+  sample_rect(ground, ankle, yaw, s.heel - p.clearance, s.toe + p.clearance, s.half_width + p.clearance,
+              [&](double t) { highest = std::max(highest, t); });
   bool ok = true;
   sample_rect(ground, ankle, yaw, s.heel + p.end_margin, s.toe - p.end_margin, s.half_width - p.side_margin,
               [&](double t) { ok = ok && t >= highest - p.level_tol; });

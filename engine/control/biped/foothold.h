@@ -25,12 +25,17 @@ struct FootholdParams {
   double max_shift = 0.20;    // search radius (m)
   double grid = 0.01;         // search resolution (m)
   double lateral_cost = 2.0;  // a sideways shift (across frame_yaw) costs this much more than one along it
+  // m, the highest top is looked for this far around the sole too: a landing beside a higher top (a crate's side, the
+  // platform's edge from the floor) keeps this clear of it, so a landing that misses by a few cm does not come down on
+  // that edge (0: the sole alone, the clips' steps)
+  double clearance = 0.0;
   SoleShape sole;
 };
 
 // True when the sole placed with its ankle over `ankle` (world x, y) and toes pointing along `yaw` rests well: every
-// sample of its core lies on the highest crate top found under the whole sole (an overhang over a LOWER crate is
-// fine, the foot stands flat on the higher one; an edge of a HIGHER crate under the heel or toe is not).
+// sample of its core lies on the highest crate top found under the whole sole, widened by p.clearance (an overhang
+// over a LOWER crate is fine, the foot stands flat on the higher one; an edge of a HIGHER crate under the heel or toe,
+// or within the clearance, is not).
 bool foothold_ok(GroundHeight ground, const Eigen::Vector2d& ankle, double yaw, const FootholdParams& p = {});
 
 struct Foothold {

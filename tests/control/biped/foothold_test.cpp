@@ -67,3 +67,24 @@ TEST(Foothold, NothingWithinTheSearchRadiusLeavesTheSpotAndSaysSo) {
   // Forward until the heel (ankle - 0.08) clears the post edge at 0.05: 0.14 on the grid (backward needs 0.24).
   EXPECT_NEAR(g.shift.x(), 0.14, 1e-9);
 }
+
+// FootholdParams::clearance (the balance steps' footholds): a landing beside a higher top keeps that far from it, so a
+// landing a few cm off does not come down on its edge; an overhang over a LOWER top stays fine.
+TEST(Foothold, TheClearanceKeepsALandingThatFarFromAHigherTopButNotFromALowerOne) {
+  const Boxes crates = two_crates();
+  const auto a = crates.ground();
+  eng::control::FootholdParams clear;
+  clear.clearance = 0.05;
+  // Toes along +X on the low crate, the toe (ankle + 0.18) 1.4 cm short of the high crate's side (x = 0.006).
+  const V ankle(-0.20, 0.0);
+  ASSERT_TRUE(foothold_ok(a, ankle, 0.0));
+  EXPECT_FALSE(foothold_ok(a, ankle, 0.0, clear));
+  const auto f = find_foothold(a, ankle, 0.0, 0.0, clear);
+  ASSERT_TRUE(f.found);
+  // Back until the sample 5 cm past the toe leaves the high crate: ankle + 0.23 < 0.006, on the 1 cm grid -0.03.
+  EXPECT_NEAR(f.shift.x(), -0.03, 1e-9);
+  EXPECT_NEAR(f.shift.y(), 0.0, 1e-9);
+  EXPECT_LE(ankle.x() + f.shift.x() + clear.sole.toe + clear.clearance, 0.006);
+  // On the high crate with the heel 2 cm out over the low one: still flat on the high one.
+  EXPECT_TRUE(foothold_ok(a, V(0.06, 0.0), 0.0, clear));
+}
