@@ -122,24 +122,68 @@ StepLanding place_balance_step(StepPlacement how, const Eigen::Vector2d& com, co
     T = std::max(t.min_duration, (out.to - from).norm() / t.swing_speed);
   }
   // Within the leg's reach of the stance foot, not on it, and not across it: a landing on the stance foot's other
-  // side (a cross-over) keeps ahead of or behind it by cross_gap, on the side the foot came from.
+  // side (a cross-over) keeps ahead of or behind it by cross_gap, on the side the capture point puts it (the swing
+  // passes around the stance foot, start_balance_step); one on the foot's own side but closer across than half
+  // min_gap is moved out to it (the soles pass side by side). Before, every landing within half min_gap went ahead or
+  // behind by the side the foot came from: a forward step from 3 cm behind the stance foot, or re-planned from 12.5 to
+  // 11.9 cm beside it, jumped 0.5 m behind it while the body ran on forward (forward push, seed 2;
+  // docs/decisions/balance-steps.md, fourth round).
   const Eigen::Vector2d fwd(std::cos(heading), std::sin(heading)), left(-fwd.y(), fwd.x());
   Eigen::Vector2d d = out.to - stance;
   if (d.norm() > t.max_reach) d *= t.max_reach / d.norm();
   const double side = left.dot(from - stance) >= 0.0 ? 1.0 : -1.0;
-  if (side * left.dot(d) < 0.5 * t.min_gap) {
-    const double along = fwd.dot(d), sign = fwd.dot(from - stance) >= 0.0 ? 1.0 : -1.0;
+  const double across = side * left.dot(d);
+  if (across < 0.0) {
+    const double along = fwd.dot(d), sign = along >= 0.0 ? 1.0 : -1.0;
     if (sign * along < t.cross_gap) d += (sign * t.cross_gap - along) * fwd;
+  } else if (across < 0.5 * t.min_gap) {
+    d += (0.5 * t.min_gap - across) * side * left;
   }
   if (d.norm() < t.min_gap) d = (d.norm() > 1e-6 ? d.normalized() : Eigen::Vector2d(side * left)) * t.min_gap;
+  if (d.norm() > t.max_reach) d *= t.max_reach / d.norm();
   out.to = stance + d;
   return out;
 }
 
+Eigen::Vector2d balance_step_path(const BalanceStep& s, double e, Eigen::Vector2d* d_de) {
+  const Eigen::Vector2d via = 0.5 * (s.from + s.to) + s.bow;
+  if (d_de) *d_de = 2.0 * (1.0 - e) * (via - s.from) + 2.0 * e * (s.to - via);
+  return (1.0 - e) * (1.0 - e) * s.from + 2.0 * e * (1.0 - e) * via + e * e * s.to;
+}
+
 namespace {
+// The path bent around the stance foot: a straight swing passing closer than pass_clearance to the stance sole's centre
+// (a cross-over in front of or behind it, a foot stepping past it) would carry the leg through the stance leg. The
+// middle control point moves away from the stance foot until the path's nearest sample keeps the clearance (the
+// curve's midpoint moves half as far as the control point).
+void bend_path(BalanceStep& s) {
+  s.bow.setZero();
+  if (s.pass_clearance <= 0.0) return;
+  const Eigen::Vector2d seg = s.to - s.from;
+  Eigen::Vector2d away = Eigen::Vector2d::Zero();
+  for (int it = 0; it < 6; ++it) {
+    double nearest = std::numeric_limits<double>::infinity();
+    Eigen::Vector2d at = s.from;
+    for (int i = 0; i <= 20; ++i) {
+      const Eigen::Vector2d p = balance_step_path(s, i / 20.0);
+      if ((p - s.stance).norm() < nearest) nearest = (p - s.stance).norm(), at = p;
+    }
+    if (nearest >= s.pass_clearance - 1e-3) return;
+    if (away.isZero()) {
+      // Away from the stance foot on the side the straight path passes it (across the segment; an exact hit: the
+      // side the swing foot starts on).
+      const Eigen::Vector2d across(-seg.y(), seg.x());
+      const double side = across.dot(at - s.stance);
+      const double start_side = across.dot(s.from - s.stance);
+      away = across.normalized() * ((std::abs(side) > 1e-6 ? side : start_side) >= 0.0 ? 1.0 : -1.0);
+    }
+    s.bow += 2.0 * (s.pass_clearance - nearest) * away;
+  }
+}
+
 // The landing moved onto a foothold (the smallest shift that puts the sole's core flat on one top; foothold.h
-// works on the ankle), its top and the highest top the sole passes over on the way (its ends and middle along the
-// straight path).
+// works on the ankle), the path bent around the stance foot, its top and the highest top the sole passes over on
+// the way (its ends and middle along the path).
 void land_on_foothold(BalanceStep& s, const Eigen::Vector2d& to, GroundHeight ground, const FootGeometry& g,
                       const FootholdParams& fp) {
   const Eigen::Rotation2Dd R(s.yaw);
@@ -147,10 +191,11 @@ void land_on_foothold(BalanceStep& s, const Eigen::Vector2d& to, GroundHeight gr
   s.asked = to;
   s.to = to + fh.shift;
   s.to_top = ground(s.to.x(), s.to.y());
+  bend_path(s);
   const Eigen::Vector2d half = R * Eigen::Vector2d(0.5 * (g.toe.x() - g.heel.x()), 0.0);
   s.path_top = std::max(s.from_top, s.to_top);
   for (int i = 0; i <= 10; ++i) {
-    const Eigen::Vector2d c = s.from + (s.to - s.from) * (i / 10.0);
+    const Eigen::Vector2d c = balance_step_path(s, i / 10.0);
     for (const Eigen::Vector2d& q : {Eigen::Vector2d(c), Eigen::Vector2d(c + half), Eigen::Vector2d(c - half)})
       s.path_top = std::max(s.path_top, ground(q.x(), q.y()));
   }
@@ -158,12 +203,14 @@ void land_on_foothold(BalanceStep& s, const Eigen::Vector2d& to, GroundHeight gr
 }  // namespace
 
 void start_balance_step(BalanceStep& s, int foot, bool returning, const Eigen::Vector2d& from, const Eigen::Vector2d& to,
-                        double yaw, double duration, GroundHeight ground, const FootGeometry& g,
-                        const FootholdParams& fp) {
+                        const Eigen::Vector2d& stance, double pass_clearance, double yaw, double duration,
+                        GroundHeight ground, const FootGeometry& g, const FootholdParams& fp) {
   s.active = true;
   s.returning = returning;
   s.foot = foot;
   s.from = from;
+  s.stance = stance;
+  s.pass_clearance = pass_clearance;
   s.yaw = yaw;
   s.duration = duration;
   s.elapsed = 0.0;
@@ -187,14 +234,16 @@ Eigen::Vector3d balance_step_sole_target(const BalanceStep& s, const BalanceStep
     return v <= 0.0 || v >= 1.0 ? 0.0 : 6.0 * v * (1.0 - v) / (b - a);
   };
   // Lift first, travel, set down: the sole clears the path's highest top before it moves over it.
-  const Eigen::Vector2d xy = s.from + (s.to - s.from) * ease(0.1, 0.85, u);
+  const double e = ease(0.1, 0.85, u);
+  Eigen::Vector2d d_de;
+  const Eigen::Vector2d xy = balance_step_path(s, e, &d_de);
   const double clear = s.path_top + t.lift;
   const bool rising = u < 0.5;
   const double z = rising ? s.from_top + (clear - s.from_top) * ease(0.0, 0.3, u)
                           : clear + (s.to_top - t.press - clear) * ease(0.7, 1.0, u);
   if (velocity) {
     const bool moving = s.elapsed < T;
-    const Eigen::Vector2d vxy = moving ? Eigen::Vector2d((s.to - s.from) * ease_rate(0.1, 0.85, u) / T) : Eigen::Vector2d::Zero();
+    const Eigen::Vector2d vxy = moving ? Eigen::Vector2d(d_de * ease_rate(0.1, 0.85, u) / T) : Eigen::Vector2d::Zero();
     const double vz = !moving ? 0.0
                       : rising ? (clear - s.from_top) * ease_rate(0.0, 0.3, u) / T
                                : (s.to_top - t.press - clear) * ease_rate(0.7, 1.0, u) / T;

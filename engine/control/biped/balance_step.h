@@ -37,7 +37,8 @@ struct BalanceStepTuning {
   double press = 0.02;           // m, the landing's target this far into the top (it lands, not hovers)
   double max_reach = 0.75;       // m, sole centre to stance sole centre at most (a long lunge)
   double min_gap = 0.24;         // m, sole centre to stance sole centre at least (feet do not overlap)
-  double cross_gap = 0.16;       // m, a landing across the stance foot's side keeps this far ahead / behind it
+  double cross_gap = 0.16;       // m, a landing across the stance foot's side keeps this far ahead / behind it ...
+  double pass_clearance = 0.16;  // m, ... and the swing passing it keeps its sole centre this far from the stance's
   double replan_until = 0.4;     // the landing is re-planned every tick from the body's state until this fraction of the swing
   double replan_move = 0.02;     // m, ... and the foothold searched again when the plan moved this far
   double late = 0.15;            // s, a swing not touching down this long after its duration is set down anyway
@@ -68,6 +69,11 @@ struct BalanceStep {
   bool returning = false;    // phase 3's step back to the stance
   int foot = -1;             // the stepping foot (0 or 1)
   Eigen::Vector2d from = Eigen::Vector2d::Zero(), to = Eigen::Vector2d::Zero();  // sole centre, world x y
+  // The path's bend around the stance foot: the middle control point of a quadratic Bezier from `from` to `to` is
+  // their midpoint plus this (zero: a straight path).
+  Eigen::Vector2d bow = Eigen::Vector2d::Zero();
+  Eigen::Vector2d stance = Eigen::Vector2d::Zero();  // the stance foot's sole centre as the step started
+  double pass_clearance = 0.0;  // m, the path's least distance from `stance` (0: no bend)
   double yaw = 0.0;          // the foot's heading (kept as it lifted)
   double from_top = 0.0, to_top = 0.0, path_top = 0.0;  // crate tops: where it lifts, where it lands, highest between
   double duration = 0.0, elapsed = 0.0;
@@ -123,18 +129,23 @@ StepLanding place_balance_step(StepPlacement how, const Eigen::Vector2d& com, co
                                const std::vector<Eigen::Vector2d>& stance_hull, double heading,
                                const CartPoleLqr* lqr, const BalanceStepTuning& t);
 
-// Starts a step of `foot` from `from` to `to` (sole centres): the landing moved onto a flat foothold on the crates
-// (the sole's core on the highest top under it), the tops along the way measured.
+// Starts a step of `foot` from `from` to `to` (sole centres) past the stance foot's sole centre `stance`: the landing
+// moved onto a flat foothold on the crates (the sole's core on the highest top under it), the path bent to pass the
+// stance foot at least pass_clearance from it, the tops along the way measured.
 void start_balance_step(BalanceStep& s, int foot, bool returning, const Eigen::Vector2d& from, const Eigen::Vector2d& to,
-                        double yaw, double duration, GroundHeight ground, const FootGeometry& g,
-                        const FootholdParams& fp);
+                        const Eigen::Vector2d& stance, double pass_clearance, double yaw, double duration,
+                        GroundHeight ground, const FootGeometry& g, const FootholdParams& fp);
+
+// The swing's sole centre on its path (the quadratic Bezier from, from + (to - from) / 2 + bow, to) at e in [0, 1],
+// and the path's derivative in e.
+Eigen::Vector2d balance_step_path(const BalanceStep& s, double e, Eigen::Vector2d* d_de = nullptr);
 
 // Re-aims a swing under way at a new landing (the body's state moved on: the push still acting, the stance foot's
 // centre of pressure not where the plan put it): the foothold is searched again when it moved replan_move or more.
 void replan_balance_step(BalanceStep& s, const Eigen::Vector2d& to, GroundHeight ground, const FootGeometry& g,
                          const FootholdParams& fp, const BalanceStepTuning& t);
 
-// The swing's sole-centre target at the step's elapsed time (world): horizontal C1 ease from `from` to `to`, lifted
+// The swing's sole-centre target at the step's elapsed time (world): horizontal C1 ease along the path, lifted
 // over the path's highest top by `lift` mid-swing, set down `press` into the landing top at the end.
 // Its velocity (the path's derivative at the elapsed time): the swing's feed-forward. (Differenced tick to tick
 // instead, a re-planned landing's jump read as a 4-5 m/s kick and the foot overshot by 40 cm.)

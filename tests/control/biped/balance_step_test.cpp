@@ -126,7 +126,8 @@ TEST(StartBalanceStep, LandsFlatOnOneTopAndClearsTheHighestOnTheWay) {
   eng::control::FootGeometry g;
   eng::control::FootholdParams fp;
   BalanceStepTuning t;
-  eng::control::start_balance_step(s, 1, false, Vector2d(0.0, 0.0), Vector2d(0.3, 0.0), 0.0, 0.3, ground, g, fp);
+  eng::control::start_balance_step(s, 1, false, Vector2d(0.0, 0.0), Vector2d(0.3, 0.0), Vector2d(0.0, 0.3),
+                                   t.pass_clearance, 0.0, 0.3, ground, g, fp);
   EXPECT_TRUE(eng::control::foothold_ok(ground, s.to - g.centre.head<2>(), 0.0, fp)) << "shifted onto one top";
   EXPECT_NEAR(s.path_top, 0.2, 1e-12);
   // The path: starts at the sole, clears the block by `lift` mid-swing, ends pressed into the landing top.
@@ -155,6 +156,56 @@ TEST(BalanceStepSoleTarget, VelocityIsThePathsDerivative) {
     const Eigen::Vector3d p1 = eng::control::balance_step_sole_target(s, t);
     EXPECT_NEAR(((p1 - p0) / h - v).norm(), 0.0, 1e-4) << "at " << e << " s";
   }
+}
+
+// The landing's side of the stance foot follows the capture point: a forward step by the foot 5 cm behind the stance
+// foot and 15 cm beside it lands ahead of it, moved out to half min_gap beside it (the old rule put any landing
+// within half min_gap across behind the stance foot, by the side the foot came from: 0.5 m back while the body ran
+// forward); a cross-over forward lands ahead by cross_gap.
+TEST(PlaceBalanceStep, ALandingGoesAheadOrBehindTheStanceFootWhereTheCapturePointIs) {
+  BalanceStepTuning t;
+  const double w = eng::control::lip_omega(0.95);
+  const Vector2d stance(0.0, 0.0), from(-0.05, 0.15);
+  const auto hull = sole_at(stance);
+  // Pushed forward with the com over the stance foot's line: the capture point lands ahead, 8 cm across (side_margin).
+  auto land = eng::control::place_balance_step(eng::control::StepPlacement::CapturePoint, Vector2d(0.0, 0.0),
+                                               Vector2d(1.0, 0.0), w, from, stance, hull, 0.0, nullptr, t);
+  EXPECT_GT(land.to.x(), stance.x() + t.cross_gap);
+  EXPECT_NEAR(land.to.y(), stance.y() + 0.5 * t.min_gap, 1e-9);
+  // Pushed forward and to the right: the left foot crosses over in front of the stance foot.
+  land = eng::control::place_balance_step(eng::control::StepPlacement::CapturePoint, Vector2d(0.0, -0.05),
+                                          Vector2d(1.0, -0.6), w, from, stance, hull, 0.0, nullptr, t);
+  EXPECT_LT(land.to.y(), stance.y());
+  EXPECT_GE(land.to.x(), stance.x() + t.cross_gap - 1e-9);
+}
+
+// A cross-over's swing bends around the stance foot (its sole centre kept pass_clearance from the stance's all the
+// way, within the path's sampling); a step that does not pass the stance foot swings straight.
+TEST(StartBalanceStep, ACrossOversPathPassesTheStanceFootAtTheClearanceAndAPlainStepIsStraight) {
+  auto flat = [](double, double) { return 0.0; };
+  const auto ground = eng::control::GroundHeight::of(flat);
+  eng::control::FootGeometry g;
+  eng::control::FootholdParams fp;
+  BalanceStepTuning t;
+  eng::control::BalanceStep s;
+  const Vector2d stance(0.0, 0.0);
+  // From behind-left to ahead-right: the straight path runs 2.5 cm from the stance sole's centre.
+  eng::control::start_balance_step(s, 0, false, Vector2d(-0.3, 0.05), Vector2d(0.3, -0.1), stance, t.pass_clearance,
+                                   0.0, 0.3, ground, g, fp);
+  ASSERT_GT(s.bow.norm(), 0.0);
+  double nearest = 1e9;
+  for (int i = 0; i <= 200; ++i) nearest = std::min(nearest, (eng::control::balance_step_path(s, i / 200.0) - stance).norm());
+  EXPECT_GE(nearest, t.pass_clearance - 0.005);
+  EXPECT_LE(nearest, t.pass_clearance + 0.03);  // bent no further than it needs
+  // It bends on the side the straight path passed (2.5 cm to the right of the stance sole's centre: around its heel
+  // and along its right side), further out than the straight path.
+  EXPECT_LT(eng::control::balance_step_path(s, 0.5).y(), -0.025 - 0.1);
+  EXPECT_NEAR((eng::control::balance_step_path(s, 1.0) - s.to).norm(), 0.0, 1e-12);
+  // A side step away from the stance foot: straight.
+  eng::control::start_balance_step(s, 0, false, Vector2d(0.0, 0.2), Vector2d(0.1, 0.5), stance, t.pass_clearance, 0.0,
+                                   0.3, ground, g, fp);
+  EXPECT_EQ(s.bow, Vector2d::Zero());
+  EXPECT_NEAR((eng::control::balance_step_path(s, 0.5) - 0.5 * (s.from + s.to)).norm(), 0.0, 1e-12);
 }
 
 }  // namespace
