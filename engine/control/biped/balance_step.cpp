@@ -122,22 +122,18 @@ StepLanding place_balance_step(StepPlacement how, const Eigen::Vector2d& com, co
     T = std::max(t.min_duration, (out.to - from).norm() / t.swing_speed);
   }
   // Within the leg's reach of the stance foot, not on it, and not across it: a landing on the stance foot's other
-  // side (a cross-over) keeps ahead of or behind it by cross_gap, on the side the capture point puts it (the swing
-  // passes around the stance foot, start_balance_step); one on the foot's own side but closer across than half
-  // min_gap is moved out to it (the soles pass side by side). Before, every landing within half min_gap went ahead or
-  // behind by the side the foot came from: a forward step from 3 cm behind the stance foot, or re-planned from 12.5 to
-  // 11.9 cm beside it, jumped 0.5 m behind it while the body ran on forward (forward push, seed 2;
+  // side (a cross-over), or on its own side closer across than half min_gap, keeps ahead of or behind the stance foot
+  // by cross_gap, on the side the capture point puts it (the swing passes around the stance foot, start_balance_step).
+  // By the side the foot came from instead, a forward step from 3 cm behind the stance foot, or one re-planned from
+  // 12.5 to 11.9 cm beside it, jumped 0.5 m behind it while the body ran on forward (forward push, seed 2;
   // docs/decisions/balance-steps.md, fourth round).
   const Eigen::Vector2d fwd(std::cos(heading), std::sin(heading)), left(-fwd.y(), fwd.x());
   Eigen::Vector2d d = out.to - stance;
   if (d.norm() > t.max_reach) d *= t.max_reach / d.norm();
   const double side = left.dot(from - stance) >= 0.0 ? 1.0 : -1.0;
-  const double across = side * left.dot(d);
-  if (across < 0.0) {
+  if (side * left.dot(d) < 0.5 * t.min_gap) {
     const double along = fwd.dot(d), sign = along >= 0.0 ? 1.0 : -1.0;
     if (sign * along < t.cross_gap) d += (sign * t.cross_gap - along) * fwd;
-  } else if (across < 0.5 * t.min_gap) {
-    d += (0.5 * t.min_gap - across) * side * left;
   }
   if (d.norm() < t.min_gap) d = (d.norm() > 1e-6 ? d.normalized() : Eigen::Vector2d(side * left)) * t.min_gap;
   if (d.norm() > t.max_reach) d *= t.max_reach / d.norm();

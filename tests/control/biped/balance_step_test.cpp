@@ -159,9 +159,9 @@ TEST(BalanceStepSoleTarget, VelocityIsThePathsDerivative) {
 }
 
 // The landing's side of the stance foot follows the capture point: a forward step by the foot 5 cm behind the stance
-// foot and 15 cm beside it lands ahead of it, moved out to half min_gap beside it (the old rule put any landing
-// within half min_gap across behind the stance foot, by the side the foot came from: 0.5 m back while the body ran
-// forward); a cross-over forward lands ahead by cross_gap.
+// foot and 15 cm beside it lands ahead of it, 8 cm across (the side margin; the old rule put every landing within
+// half min_gap across behind the stance foot, by the side the foot came from: 0.5 m back while the body ran forward);
+// a cross-over forward lands ahead by cross_gap.
 TEST(PlaceBalanceStep, ALandingGoesAheadOrBehindTheStanceFootWhereTheCapturePointIs) {
   BalanceStepTuning t;
   const double w = eng::control::lip_omega(0.95);
@@ -171,7 +171,7 @@ TEST(PlaceBalanceStep, ALandingGoesAheadOrBehindTheStanceFootWhereTheCapturePoin
   auto land = eng::control::place_balance_step(eng::control::StepPlacement::CapturePoint, Vector2d(0.0, 0.0),
                                                Vector2d(1.0, 0.0), w, from, stance, hull, 0.0, nullptr, t);
   EXPECT_GT(land.to.x(), stance.x() + t.cross_gap);
-  EXPECT_NEAR(land.to.y(), stance.y() + 0.5 * t.min_gap, 1e-9);
+  EXPECT_NEAR(land.to.y(), stance.y() + t.side_margin, 1e-9);
   // Pushed forward and to the right: the left foot crosses over in front of the stance foot.
   land = eng::control::place_balance_step(eng::control::StepPlacement::CapturePoint, Vector2d(0.0, -0.05),
                                           Vector2d(1.0, -0.6), w, from, stance, hull, 0.0, nullptr, t);
