@@ -46,8 +46,8 @@ void update_support_base(const eng::physics::Data& d, const Arena& arena, Boxer&
   // A balance step on its way down to a lower top (off a crate, off the platform): the base goes toward that top
   // from the lift-off, so the stance leg bends and the swing leg reaches it. Read under the feet alone the base
   // followed only once the foot was over the lower top, and the foot came down late (a step down 0.17 m, right push
-  // seed 7: set down by the timeout 0.15 s past its swing). Yin's five pushes x seeds 1-40: 172 of 200 survived with it,
-  // 164 without.
+  // seed 7: set down by the timeout 0.15 s past its swing). Yin's five pushes x seeds 1-40, before the cross-over's
+  // change: 172 of 200 survived with it, 164 without.
   if (b.ctl.balance_steps.step.active) lowest = std::min(lowest, b.ctl.balance_steps.step.to_top);
   if (!b.ctl.have_support_base) b.ctl.support_base = std::min(b.stance.lead_top, b.stance.rear_top), b.ctl.have_support_base = true;
   b.ctl.support_base += (1.0 - std::exp(-dt / b.settings.tuning.stance.base_tau)) * (lowest - b.ctl.support_base);

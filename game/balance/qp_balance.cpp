@@ -329,9 +329,9 @@ void actuate(QpBalance& q, BalanceTick& tick) {
   // Not during a balance step: its stance foot often rolls onto an edge or a corner (1-2 contact points), and with the
   // com task priced down there the plan asked one corner for 3.7 kN and launched the body 12 cm into the air
   // (0.2 s x 394 N to the right, seed 2); the step's own pricing (balance_step_com_scale) stays.
-  // In a push's recovery (between its steps) a foot often lands on an edge or a corner; there one contact point a
-  // foot still carries the body, and the com task priced down let the plan drop the body's weight and tip it the way
-  // the posture pulled (planned 100 N up and 500 N forward against a desired 5 m/s^2 backward).
+  // In a push's recovery (between its steps) a foot often lands on an edge or a corner; one contact point under each
+  // foot still carries the body, and with the com task priced down the plan dropped the body's weight and tipped it
+  // the way the posture pulled (planned 100 N up and 500 N forward against a desired 5 m/s^2 backward).
   const int enough = b.ctl.balance_steps.recovering ? tq.recovery_support_contacts : tq.min_support_contacts;
   const bool unsupported = int(in.contacts.size()) < enough && !first_tick && !b.ctl.balance_steps.step.active;
   if (unsupported) {

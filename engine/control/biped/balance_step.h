@@ -56,8 +56,9 @@ struct BalanceStepTuning {
   int max_steps = 6;             // balance steps in one recovery (a multi-step stop), then the fall is let happen
   // Where a balance step may land (foothold.h): wider margins than the clips' steps, since a recovery's landing
   // misses by 5 cm (median; 14 cm at the 90th percentile): the sole's core 3.5 cm inside its top's sides (1.5) and no
-  // higher top within 5 cm of the sole. With the clips' margins a quarter of the landings on the crates touched down
-  // early, a toe on the side of a higher crate or a sole on the platform's edge that slid off it (docs/decisions/balance-steps.md).
+  // higher top within 5 cm of the sole. With the clips' margins a fifth of the landings on the crates touched down
+  // early (8% with these), a toe on the side of a higher crate or a sole on the platform's edge that slid off it
+  // (docs/decisions/balance-steps.md, fourth round).
   FootholdParams foothold = {.side_margin = 0.035, .clearance = 0.05, .sole = {}};
   // InvertedPendulumLqr: Kwon & Hodgins' Q = diag(0, 30000, 30000, 0), R = 1 on (cart x, angle, cart v, angular v).
   double cart_mass_fraction = 0.15;  // the cart (the support: feet and shanks) as a fraction of the body's mass
