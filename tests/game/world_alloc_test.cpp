@@ -73,5 +73,33 @@ TEST(WorldAlloc, GraphWalkStepAllocatesNothingOnceWarm) {
   EXPECT_FALSE(world.boxers[0].metrics.fell);  // the measured stretch was the normal fight, not a body lying still
 }
 
+// A push's recovery (balance steps: landings re-planned and searched for footholds every tick of the swing's first
+// 40%, the return step) allocates nothing once a first recovery has warmed it.
+TEST(WorldAlloc, PushRecoveryWithBalanceStepsAllocatesNothingOnceWarm) {
+  Options o;
+  o.headless = true;
+  o.scenario_id = Scenario::Push;
+  o.scenario = "push";
+  o.seed = 1;
+  o.push_dir_deg = 270.0;  // to the right: a crossing step and a second one
+  o.push_force = 300.0;
+  o.push_duration = 0.2;
+  o.push_at = 2.0;
+  auto w = make_world(o);
+  ASSERT_TRUE(w) << w.error();
+  World& world = **w;
+  for (int i = 0; i < 10 * 240; ++i) step_world(world);  // the first push and its recovery
+  const int warm_steps = world.boxers[0].metrics.balance_steps;
+  ASSERT_GT(warm_steps, 0);
+  world.options.push_at = 10.5;  // the same push again, counted
+  g_allocs = 0;
+  g_count = true;
+  for (int i = 0; i < 6 * 240; ++i) step_world(world);
+  g_count = false;
+  EXPECT_EQ(g_allocs, 0) << "allocations in a push's recovery (BOXING_ALLOC_TRACE=N prints the stacks of the first N)";
+  EXPECT_GT(world.boxers[0].metrics.balance_steps, warm_steps);  // the counted stretch took balance steps
+  EXPECT_FALSE(world.boxers[0].metrics.fell);
+}
+
 }  // namespace
 }  // namespace boxing

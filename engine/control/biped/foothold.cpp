@@ -37,28 +37,38 @@ bool foothold_ok(GroundHeight ground, const Eigen::Vector2d& ankle, double yaw, 
 
 Foothold find_foothold(GroundHeight ground, const Eigen::Vector2d& ankle, double yaw, double frame_yaw,
                        const FootholdParams& p) {
+  // Candidates in order of cost (ties: the grid order, deterministic); the first good one wins. The order depends on
+  // the search's shape alone, so it is sorted once per thread and shape (on the first call, found or not), not per
+  // call: a balance step searches every tick it re-plans, and the step allocates nothing once warm.
+  struct Candidate {
+    double cost;
+    int i, j;
+  };
+  struct Order {
+    double max_shift = -1.0, grid = 0.0, lateral_cost = 0.0;
+    std::vector<Candidate> cand;
+  };
+  thread_local Order order;
+  if (order.max_shift != p.max_shift || order.grid != p.grid || order.lateral_cost != p.lateral_cost) {
+    const int n = static_cast<int>(std::floor(p.max_shift / p.grid));
+    order.cand.clear();
+    for (int i = -n; i <= n; ++i)
+      for (int j = -n; j <= n; ++j) {
+        const double a = i * p.grid, c = j * p.grid;
+        if (a * a + c * c > p.max_shift * p.max_shift + 1e-12) continue;
+        order.cand.push_back({a * a + p.lateral_cost * c * c, i, j});
+      }
+    std::stable_sort(order.cand.begin(), order.cand.end(),
+                     [](const Candidate& x, const Candidate& y) { return x.cost < y.cost; });
+    order.max_shift = p.max_shift, order.grid = p.grid, order.lateral_cost = p.lateral_cost;
+  }
   Foothold r;
   if (foothold_ok(ground, ankle, yaw, p)) {
     r.found = true;
     return r;
   }
-  // Candidates in order of cost; the first good one wins (ties: the grid order, deterministic).
-  const int n = static_cast<int>(std::floor(p.max_shift / p.grid));
-  struct Candidate {
-    double cost;
-    int i, j;
-  };
-  std::vector<Candidate> cand;
-  cand.reserve((2 * n + 1) * (2 * n + 1));
-  for (int i = -n; i <= n; ++i)
-    for (int j = -n; j <= n; ++j) {
-      const double a = i * p.grid, c = j * p.grid;
-      if (a * a + c * c > p.max_shift * p.max_shift + 1e-12) continue;
-      cand.push_back({a * a + p.lateral_cost * c * c, i, j});
-    }
-  std::stable_sort(cand.begin(), cand.end(), [](const Candidate& x, const Candidate& y) { return x.cost < y.cost; });
   const Eigen::Vector2d ex(std::cos(frame_yaw), std::sin(frame_yaw)), ey(-ex.y(), ex.x());
-  for (const Candidate& c : cand) {
+  for (const Candidate& c : order.cand) {
     const Eigen::Vector2d s = c.i * p.grid * ex + c.j * p.grid * ey;
     if (foothold_ok(ground, ankle + s, yaw, p)) {
       r.shift = s;
