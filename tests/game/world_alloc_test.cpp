@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <new>
 
+#include "game/scenario.h"
 #include "game/world.h"
 
 namespace {
@@ -54,12 +55,17 @@ void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
 namespace boxing {
 namespace {
 
-TEST(WorldAlloc, GraphWalkStepAllocatesNothingOnceWarm) {
+Options headless_scenario(Scenario id, uint64_t seed) {
   Options o;
   o.headless = true;
-  o.scenario_id = Scenario::GraphWalk;
-  o.scenario = "graph-walk";
-  o.seed = 3;
+  o.scenario_id = id;
+  o.scenario = scenario_name(id);
+  o.seed = seed;
+  return o;
+}
+
+TEST(WorldAlloc, GraphWalkStepAllocatesNothingOnceWarm) {
+  const Options o = headless_scenario(Scenario::GraphWalk, 3);
   auto w = make_world(o);
   ASSERT_TRUE(w) << w.error();
   World& world = **w;
@@ -76,11 +82,7 @@ TEST(WorldAlloc, GraphWalkStepAllocatesNothingOnceWarm) {
 // A push's recovery (balance steps: landings re-planned and searched for footholds every tick of the swing's first
 // 40%, the return step) allocates nothing once a first recovery has warmed it.
 TEST(WorldAlloc, PushRecoveryWithBalanceStepsAllocatesNothingOnceWarm) {
-  Options o;
-  o.headless = true;
-  o.scenario_id = Scenario::Push;
-  o.scenario = "push";
-  o.seed = 1;
+  Options o = headless_scenario(Scenario::Push, 1);
   o.push_dir_deg = 270.0;  // to the right: a crossing step and a second one
   o.push_force = 300.0;
   o.push_duration = 0.2;
