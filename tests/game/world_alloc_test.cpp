@@ -79,11 +79,11 @@ TEST(WorldAlloc, GraphWalkStepAllocatesNothingOnceWarm) {
   EXPECT_FALSE(world.boxers[0].metrics.fell);  // the measured stretch was the normal fight, not a body lying still
 }
 
-// A push's recovery (balance steps: landings re-planned and searched for footholds every tick of the swing's first
-// 40%, the return step) allocates nothing once a first recovery has warmed it.
+// A push's recovery (a balance step: its landing re-planned and searched for a foothold every tick of the swing's
+// first 40%) allocates nothing once a first recovery has warmed it.
 TEST(WorldAlloc, PushRecoveryWithBalanceStepsAllocatesNothingOnceWarm) {
   Options o = headless_scenario(Scenario::Push, 1);
-  o.push_dir_deg = 270.0;  // to the right: a crossing step and a second one
+  o.push_dir_deg = 270.0;  // to the right: one crossing step on this seed
   o.push_force = 300.0;
   o.push_duration = 0.2;
   o.push_at = 2.0;
