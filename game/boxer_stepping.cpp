@@ -143,6 +143,12 @@ void plan_steps(const eng::physics::Data& d, const eng::assets::CharacterDesc& d
 
 namespace boxing {
 
+double assist_reach(const eng::physics::Model& m, const Boxer& b) {
+  if (!b.settings.root_params.enabled) return 0.0;
+  const double tau = b.settings.root_params.max_torque * b.ctl.root_spring.consciousness();
+  return tau / (b.control_body.total_mass * m.gravity.norm());
+}
+
 // BALANCE STEPS (balance_step.h): Yin & van de Panne's three phases on the balance QP. Measurements:
 // docs/decisions/balance-steps.md.
 void take_balance_steps(const eng::physics::Model& m, const eng::physics::Data& d,
@@ -210,7 +216,8 @@ void take_balance_steps(const eng::physics::Model& m, const eng::physics::Data& 
     const double out = eng::control::outside_distance(b.scratch.hull, xi);
     const int k = eng::control::unloaded_foot(vcom, sole);
     const std::vector<Eigen::Vector2d>& stance_pts = corners[1 - k];
-    if (b.settings.stepping && out > t.trigger_margin && vcom.norm() > t.min_speed && !stance_pts.empty() &&
+    const double reach = t.assist_reach_share * assist_reach(m, b);  // what the root assist holds in place
+    if (b.settings.stepping && out > t.trigger_margin + reach && vcom.norm() > t.min_speed && !stance_pts.empty() &&
         st.steps_in_recovery < t.max_steps) {
       // PHASE 1, change of support: the unloaded leg steps to where the body can stop.
       eng::control::convex_hull_2d(stance_pts, stance_hull);

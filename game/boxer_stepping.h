@@ -18,6 +18,9 @@ void gate_lift_off(const eng::physics::Model& m, const eng::physics::Data& d, co
 // The step planner (step_planner.h) on the placed desired pose: b.ctl.step.
 void plan_steps(const eng::physics::Data& d, const eng::assets::CharacterDesc& desc, const Arena& arena, Boxer& b,
                 const bool swing[2], double dt);
+// How far beyond the feet the root assist (the root spring's torque, its limit scaled by consciousness) moves the
+// centroidal moment pivot: tau / (m g) (Popovic, Goswami & Herr 2005), m; 0 without a root spring.
+double assist_reach(const eng::physics::Model& m, const Boxer& b);
 // Balance steps (balance_step.h), after plan_steps: a step of the balance's own overrides the clip's feet (swing,
 // b.ctl.step) while it lasts; started when the capture point leaves the feet, or to return to the stance after.
 void take_balance_steps(const eng::physics::Model& m, const eng::physics::Data& d,

@@ -94,7 +94,7 @@ flags:
                          graph-walk and match (the paper's boxers), off for stand / push (the balance lab)
   --root-spring-max NM   its torque limit in N m (default 400 with qp, 120 with pd)
   --stepping on|off|auto balance QP: steps when a push carries the capture point out of the feet (off: in place);
-                         auto (default): on for push (the lab), off elsewhere
+                         auto (default): on for push (the lab), match and graph-walk, off elsewhere
   --step-placement capture|ipc
                          where a balance step lands: past the capture point (default) or where Kwon & Hodgins'
                          cart-pole LQR comes to rest

@@ -56,7 +56,7 @@ struct Options {
   // "pd" = eq. 3 as implicit joint springs plus the PD shift of the desired root (boxer.cpp's balance layer).
   std::string balance = "qp";
   std::string stepping = "auto";      // --stepping on|off|auto: the balance's own steps (off = in place, Kudoh's
-                                      // lab); auto = on in the push lab, off elsewhere
+                                      // lab); auto = on in the push lab, the match and the walk, off elsewhere
   std::string step_placement = "capture";  // --step-placement capture|ipc: capture point or Kwon's cart-pole LQR
   bool flat = false;                  // --flat: one level platform (the papers' floor) instead of the uneven crates
   // --priorities kudoh|off|auto: Kudoh's priorities in the balance QP (the trunk's posture x100, the com x30, the arms'

@@ -176,9 +176,11 @@ void add_boxer(World& w, int index, const Eigen::Vector3f& color, bool limp, con
   b.bodies = add_character(w.model, w.boxer_desc, "b" + std::to_string(index) + "_", group, 0xffffffffu, false);
   b.settings.space = servo_space_from_name(w.options.servo);
   b.settings.balance_qp = w.options.balance == "qp";
-  // Balance steps: on in the push lab; auto leaves the other scenarios as they were measured (the walk's and the
-  // match's gated clip steps, the stand's drags) until the steps win there (docs/decisions/balance-steps.md).
-  b.settings.stepping = w.options.stepping == "on" || (w.options.stepping == "auto" && w.options.scenario_id == Scenario::Push);
+  // Balance steps: on in the push lab and where the boxers walk the graph (the match, the walk), there past what the
+  // root assist holds (BalanceStepTuning::assist_reach_share: none in the twelve 10-minute walks, a few a match); the
+  // stand's drags (no root help) keep them off as they were measured (docs/decisions/balance-steps.md, sixth round).
+  b.settings.stepping = w.options.stepping == "on" || (w.options.stepping == "auto" && (w.options.scenario_id == Scenario::Push ||
+                                                                                       scenario_hooks(w.options.scenario_id).walks_graph));
   if (w.options.priorities == "kudoh") {  // the fight's (MatchTuning, match_setup), in any scenario
     b.settings.tuning.qp.trunk_weight = MatchTuning{}.trunk_weight;
     b.settings.tuning.qp.com_weight = MatchTuning{}.com_weight;

@@ -383,8 +383,12 @@ void referee(World& w) {
     }
     // A fall the match did not call (detected Down from Guard / Stunned this tick).
     if (s.state == BoxerState::Down && s.since == t && f.getup < 0) {
-      if (t - f.last_hit_at > kFallWithoutHitWindow) ++f.falls_without_hit;
-      else ++f.knockdowns;
+      if (t - f.last_hit_at > kFallWithoutHitWindow) {
+        ++f.falls_without_hit;
+      } else {
+        ++f.knockdowns;
+        ++f.falls_after_hit;
+      }
       f.getup = static_cast<int>(mt.getups.size());
       mt.getups.push_back(down_at(k, t));
       b.ctl.root_spring.set_consciousness(0.0);
@@ -605,6 +609,12 @@ void match_after_step(World& w) {
     e.peak_speed = std::max(e.peak_speed, body_velocity_at(w, body, w.data.x[body].p).norm());
   }
   read_hits(w);
+  for (int k = 0; k < 2; ++k) {
+    MatchFighter& f = mt.fighter[k];
+    const int started_steps = w.boxers[k].metrics.balance_steps - f.balance_steps_seen;
+    if (w.data.time - f.last_hit_at <= kFallWithoutHitWindow) f.balance_steps_after_hit += started_steps;
+    f.balance_steps_seen += started_steps;
+  }
   referee(w);
 }
 
@@ -676,6 +686,8 @@ nlohmann::json match_report(const World& w) {
           {"punches_landed", pair([](const MatchFighter& f) { return f.landed; })},
           {"knockdowns", pair([](const MatchFighter& f) { return f.knockdowns; })},
           {"falls_without_hit", pair([](const MatchFighter& f) { return f.falls_without_hit; })},
+          {"falls_after_hit", pair([](const MatchFighter& f) { return f.falls_after_hit; })},
+          {"balance_steps_after_hit", pair([](const MatchFighter& f) { return f.balance_steps_after_hit; })},
           {"landed_speed_median", speeds.empty() ? 0.0 : speeds[speeds.size() / 2]},
           {"landed_fist_speed_median", fists.empty() ? 0.0 : fists[fists.size() / 2]},
           {"consciousness", pair([&w](const MatchFighter& f) {

@@ -117,6 +117,12 @@ struct MatchFighter {
   int queued = 0;
   int commands_taken = 0;        // player commands the motion graph accepted
   int thrown = 0, landed = 0, knockdowns = 0, falls_without_hit = 0;
+  // Of the knockdowns, those the match did not call: the boxer fell on its own within kFallWithoutHitWindow of a
+  // landed hit (rocked and went over; what a balance step is for).
+  int falls_after_hit = 0;
+  // The boxer's balance steps (--stepping): those started within kFallWithoutHitWindow of a landed hit on it (a
+  // boxer rocked by a punch stepping), of all it took (BoxerMetrics::balance_steps, counted here as they start).
+  int balance_steps_after_hit = 0, balance_steps_seen = 0;
   int last_clip = -1;            // the graph clip of the last tick
   int open_punch = -1;           // events index of the punch now playing (-1 none)
   int landing = -1;              // events index of a landed punch still summing its impulse (on the opponent)

@@ -203,6 +203,25 @@ TEST(BalanceSteps, APushCarryingTheCapturePointOutIsMetWithAStepWhereInPlaceFall
   }
 }
 
+TEST(BalanceSteps, APushTheRootAssistHoldsInPlaceTakesNoStep) {
+  // 413 N x 0.2 s from behind, seed 1: with no root help the capture point leaves the feet and the boxer steps; with
+  // the root spring's assist (400 N m: its moment moves the pivot up to 0.54 m past the feet, half of that counted,
+  // BalanceStepTuning::assist_reach_share) the same push is held in place, the assist at 200-400 N m, and no step is
+  // taken (the match's boxers, who fight with the assist, step only for what it cannot hold).
+  auto with = [](const char* root_spring) {
+    return run({"--scenario", "push", "--seed", "1", "--push-dir", "0", "--push-force", "413", "--push-duration", "0.2",
+                "--push-at", "2", "--stepping", "on", "--root-spring", root_spring},
+               6.0);
+  };
+  const auto bare = with("off");
+  EXPECT_GE(bare.balance_steps, 1);
+  EXPECT_FALSE(bare.fell) << "fell at " << bare.fell_at << " s (" << bare.fell_reason << ")";
+  const auto assisted = with("on");
+  EXPECT_EQ(assisted.balance_steps, 0);
+  EXPECT_FALSE(assisted.fell) << "fell at " << assisted.fell_at << " s (" << assisted.fell_reason << ")";
+  EXPECT_GT(assisted.root_torque_peak, 200.0);
+}
+
 TEST(BalanceSteps, YinsForwardSidewaysLeftAndBackwardBarsAreSteppedOutOfOnSeeds1To3) {
   // Yin & van de Panne's com velocities for a 75 kg body, 0.2 s at the chest: forward 1.1 m/s (413 N), to the left
   // 1.05 m/s (394 N), backward 0.8 m/s (300 N). Survived with steps on seeds 1-3 (to the right: the next test). The forward push's step swaps the feet into a stance the boxer can fight from: it stays in it

@@ -26,6 +26,10 @@ enum class StepPlacement { CapturePoint, InvertedPendulumLqr };
 struct BalanceStepTuning {
   double trigger_margin = 0.02;  // m, the capture point this far outside the feet's soles' hull starts a step ...
   double min_speed = 0.15;       // m/s ... with the com moving at least this fast (a body at rest is not pushed)
+  // ... beyond what a root assist holds in place (the match's root spring, torque-limited): an external moment tau on
+  // the pelvis moves the centroidal moment pivot tau / (m g) beyond the feet (Popovic, Goswami & Herr 2005), so the
+  // body holds a capture point that far out without a step; this share of that reach is added to trigger_margin
+  double assist_reach_share = 0.5;
   double land_margin = 0.05;     // m, the landing's sole centre this far beyond the predicted capture point
   // m, and this far to the side, across the com's motion away from the stance foot: the capture point lands between the
   // feet, not on the new sole's edge (the com drifts sideways over a single support; landed on its line, the capture

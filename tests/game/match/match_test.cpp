@@ -7,6 +7,7 @@
 #include <functional>
 #include <set>
 
+#include "game/interaction/interaction.h"
 #include "game/match/body_parts.h"
 #include "game/match/fighter_ai.h"
 #include "game/match/punch_aim.h"
@@ -102,6 +103,41 @@ TEST(Match, BoxerUpFromAKnockdownStandsOnItsMarkAsAtTheStart) {
 
 // The AI throws more of what lands on this opponent: with the lead hook blocked 20 times in 20 and the jab landing 10
 // of 20, the hook's share of the picks falls from a seventh to a fiftieth, the jab's rises by half.
+// The fight's balance steps (balance_step.h, on in the match): a shove its root assist cannot hold in place, 800 N x
+// 0.2 s at boxer 0's chest to either side at 5 s into the fight, seeds 1-4. In place (--stepping off) 6 of these 8
+// go down; with the steps 1 (docs/decisions/balance-steps.md, sixth round: 7 of 64 such in-match shoves with the
+// steps against 18 in place). The steps are the fight's own: none is taken in place.
+TEST(MatchSteps, AShoveTheRootAssistCannotHoldIsCaughtByBalanceSteps) {
+  int down[2] = {0, 0}, steps[2] = {0, 0};
+  for (int stepping = 0; stepping < 2; ++stepping)
+    for (uint64_t seed = 1; seed <= 4; ++seed)
+      for (double side : {1.0, -1.0}) {
+        Options o;
+        o.headless = true;
+        o.scenario_id = Scenario::Match;
+        o.scenario = "match";
+        o.seed = seed;
+        o.stepping = stepping ? "on" : "off";
+        auto made = make_world(o);
+        ASSERT_TRUE(made) << made.error();
+        World& w = **made;
+        for (int i = 0; i < 5 * 240; ++i) step_world(w);
+        InputEvent push;
+        push.kind = InputKind::Push;
+        push.boxer = 0;
+        push.bone = "chest";
+        push.vec = Eigen::Vector3d(0.0, 800.0 * side, 0.0);
+        push.duration = 0.2;
+        interaction_submit(w, push);
+        for (int i = 0; i < int(2.5 * 240); ++i) step_world(w);
+        for (const GetUp& g : w.match.getups) down[stepping] += g.boxer == 0 && g.down_at >= 5.0;
+        steps[stepping] += w.boxers[0].metrics.balance_steps;
+      }
+  EXPECT_EQ(steps[0], 0);
+  EXPECT_GE(steps[1], 4);
+  EXPECT_LE(down[1] + 3, down[0]) << "with the steps " << down[1] << " of 8 down, in place " << down[0];
+}
+
 TEST(FighterAi, ThrowsMoreOfWhatLands) {
   const auto shares = [](bool history) {
     FighterAi ai;
