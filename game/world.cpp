@@ -179,8 +179,9 @@ void add_boxer(World& w, int index, const Eigen::Vector3f& color, bool limp, con
   // Balance steps: on in the push lab and where the boxers walk the graph (the match, the walk), there past what the
   // root assist holds (BalanceStepTuning::assist_reach_share: none in the twelve 10-minute walks, a few a match); the
   // stand's drags (no root help) keep them off as they were measured (docs/decisions/balance-steps.md, sixth round).
-  b.settings.stepping = w.options.stepping == "on" || (w.options.stepping == "auto" && (w.options.scenario_id == Scenario::Push ||
-                                                                                       scenario_hooks(w.options.scenario_id).walks_graph));
+  const bool steps_by_default =
+      w.options.scenario_id == Scenario::Push || scenario_hooks(w.options.scenario_id).walks_graph;
+  b.settings.stepping = w.options.stepping == "on" || (w.options.stepping == "auto" && steps_by_default);
   if (w.options.priorities == "kudoh") {  // the fight's (MatchTuning, match_setup), in any scenario
     b.settings.tuning.qp.trunk_weight = MatchTuning{}.trunk_weight;
     b.settings.tuning.qp.com_weight = MatchTuning{}.com_weight;

@@ -101,8 +101,6 @@ TEST(Match, BoxerUpFromAKnockdownStandsOnItsMarkAsAtTheStart) {
   EXPECT_LT(g.reset_feet_off, 0.12);  // m: each ankle near where it stood at the start (the same stance, same crates)
 }
 
-// The AI throws more of what lands on this opponent: with the lead hook blocked 20 times in 20 and the jab landing 10
-// of 20, the hook's share of the picks falls from a seventh to a fiftieth, the jab's rises by half.
 // The fight's balance steps (balance_step.h, on in the match): a shove its root assist cannot hold in place, 800 N x
 // 0.2 s at boxer 0's chest to either side at 5 s into the fight, seeds 1-4. In place (--stepping off) 6 of these 8
 // go down; with the steps 1 (docs/decisions/balance-steps.md, sixth round: 7 of 64 such in-match shoves with the
@@ -138,6 +136,8 @@ TEST(MatchSteps, AShoveTheRootAssistCannotHoldIsCaughtByBalanceSteps) {
   EXPECT_LE(down[1] + 3, down[0]) << "with the steps " << down[1] << " of 8 down, in place " << down[0];
 }
 
+// The AI throws more of what lands on this opponent: with the lead hook blocked 20 times in 20 and the jab landing 10
+// of 20, the hook's share of the picks falls from a seventh to a fiftieth, the jab's rises by half.
 TEST(FighterAi, ThrowsMoreOfWhatLands) {
   const auto shares = [](bool history) {
     FighterAi ai;
