@@ -201,6 +201,10 @@ void boxer_sense_contacts(const eng::physics::Data& d, Boxer& b);
 inline constexpr double kLimpJointMaxSpeed = 30.0;  // rad/s
 void boxer_joint_speed_limits(eng::physics::Model& m, const Boxer& b, double time);
 
+// The root assist's torque limit now (N m): the root spring's, scaled by consciousness (the paper's Fig. 7: the root
+// spring "lowers its motor gains when knocked out"); 0 without a root spring.
+double root_assist_limit(const Boxer& b);
+
 // After a physics step: the metrics (upright time, com speed, tracking error, trace), then the state machine (a
 // fall: Guard -> Down), which the metrics then record.
 void boxer_measure(const eng::physics::Model& m, const eng::physics::Data& d, const eng::assets::CharacterDesc& desc,

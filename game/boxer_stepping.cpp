@@ -144,9 +144,7 @@ void plan_steps(const eng::physics::Data& d, const eng::assets::CharacterDesc& d
 namespace boxing {
 
 double assist_reach(const eng::physics::Model& m, const Boxer& b) {
-  if (!b.settings.root_params.enabled) return 0.0;
-  const double tau = b.settings.root_params.max_torque * b.ctl.root_spring.consciousness();
-  return tau / (b.control_body.total_mass * m.gravity.norm());
+  return root_assist_limit(b) / (b.control_body.total_mass * m.gravity.norm());
 }
 
 // BALANCE STEPS (balance_step.h): Yin & van de Panne's three phases on the balance QP. Measurements:

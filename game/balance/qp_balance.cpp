@@ -49,7 +49,7 @@ void actuate(QpBalance& q, BalanceTick& tick) {
   // The root spring is the QP's root assist: "lowers its motor gains when knocked out" (paper Fig. 7), the assist's
   // limit scales with consciousness.
   b.ctl.root_spring.update(b.settings.root_params, dt);
-  q.params.max_root_assist = b.settings.root_params.max_torque * b.ctl.root_spring.consciousness();
+  q.params.max_root_assist = root_assist_limit(b);  // (0 without a root spring: no assist planned, as w_root_assist = 0)
   namespace ph = eng::physics;
   const auto& skel = desc.skeleton;
   const int n = skel.size();
