@@ -188,8 +188,10 @@ void take_balance_steps(const eng::physics::Model& m, const eng::physics::Data& 
   const eng::control::GroundHeight ground = ground_of(arena);
   if (s.active) {
     s.elapsed += dt;
-    // Touch-down: the sole on the ground past the swing's middle, or late: set down where it is.
-    const bool down = b.ctl.contacts.on_ground[s.foot] && s.elapsed > 0.6 * s.duration;
+    // Touch-down: the sole on a top past the swing's middle, or late: set down where it is. A top, not the ground: a
+    // sole brushing a crate's side (the contact's normal level) had ended swings 20-30 cm short, in the air
+    // (docs/decisions/balance-steps.md, seventh round).
+    const bool down = b.ctl.contacts.on_top[s.foot] && s.elapsed > 0.6 * s.duration;
     if (!s.returning && s.elapsed < t.replan_until * s.duration && !corners[1 - s.foot].empty()) {
       // Re-planned from the body's state now, for the swing's time left.
       eng::control::convex_hull_2d(corners[1 - s.foot], stance_hull);

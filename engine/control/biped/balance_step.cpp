@@ -179,7 +179,10 @@ void bend_path(BalanceStep& s) {
 
 // The landing moved onto a foothold (the smallest shift that puts the sole's core flat on one top; foothold.h
 // works on the ankle), the path bent around the stance foot, its top and the highest top the sole passes over on
-// the way (its ends and middle along the path).
+// the way: along the path, under the sole's whole footprint (its ends, middle and sides, each side widened by the
+// foothold's side margin). Sampled along the path's line alone, a swing passing beside the stance foot's higher crate
+// brushed its side with the sole's edge, and that touch was taken for the landing, 20-30 cm short (forward push
+// 413 N, seeds 7 and 18; docs/decisions/balance-steps.md, seventh round).
 void land_on_foothold(BalanceStep& s, const Eigen::Vector2d& to, GroundHeight ground, const FootGeometry& g,
                       const FootholdParams& fp) {
   const Eigen::Rotation2Dd R(s.yaw);
@@ -189,11 +192,15 @@ void land_on_foothold(BalanceStep& s, const Eigen::Vector2d& to, GroundHeight gr
   s.to_top = ground(s.to.x(), s.to.y());
   bend_path(s);
   const Eigen::Vector2d half = R * Eigen::Vector2d(0.5 * (g.toe.x() - g.heel.x()), 0.0);
+  const Eigen::Vector2d side = R * Eigen::Vector2d(0.0, fp.sole.half_width + fp.side_margin);
   s.path_top = std::max(s.from_top, s.to_top);
   for (int i = 0; i <= 10; ++i) {
     const Eigen::Vector2d c = balance_step_path(s, i / 10.0);
-    for (const Eigen::Vector2d& q : {Eigen::Vector2d(c), Eigen::Vector2d(c + half), Eigen::Vector2d(c - half)})
-      s.path_top = std::max(s.path_top, ground(q.x(), q.y()));
+    for (double a : {-1.0, 0.0, 1.0})
+      for (double w : {-1.0, 0.0, 1.0}) {
+        const Eigen::Vector2d q = c + a * half + w * side;
+        s.path_top = std::max(s.path_top, ground(q.x(), q.y()));
+      }
   }
 }
 }  // namespace

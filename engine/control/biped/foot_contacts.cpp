@@ -1,5 +1,7 @@
 #include "engine/control/biped/foot_contacts.h"
 
+#include <cmath>
+
 namespace eng::control {
 
 void find_foot_contacts(const std::vector<physics::Contact>& contacts, const std::vector<int>& body_of_bone,
@@ -8,7 +10,7 @@ void find_foot_contacts(const std::vector<physics::Contact>& contacts, const std
   for (int k = 0; k < 2; ++k) {
     foot_body[k] = body_of_bone[bones.leg[k].foot];
     shank_body[k] = body_of_bone[bones.leg[k].shank];
-    out.support[k] = out.on_ground[k] = false;
+    out.support[k] = out.on_ground[k] = out.on_top[k] = false;
     out.normal_force[k] = 0.0;
     out.ground_points[k].clear();
   }
@@ -27,6 +29,7 @@ void find_foot_contacts(const std::vector<physics::Contact>& contacts, const std
       for (int k = 0; k < 2; ++k)
         if (other == foot_body[k]) {
           out.on_ground[k] = true;
+          out.on_top[k] = out.on_top[k] || std::abs(c.point.normal.z()) >= t.top_normal_z;
           out.ground_points[k].push_back(c.point.position.head<2>());
         }
     if (c.point.depth >= -t.fallen && other != foot_body[0] && other != foot_body[1] && other != shank_body[0] &&

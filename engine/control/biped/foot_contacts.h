@@ -18,6 +18,7 @@ struct FootContactThresholds {
   double load = 0.002;    // m gap: the foot carries load in the balance QP's plan and is the lift-off gate's stance
                           // (ground contacts only: static body 0)
   double fallen = 0.005;  // m gap: a link other than the feet and shanks touching the ground (fall detection)
+  double top_normal_z = 0.7;  // a ground contact whose normal's z is at least this is on a top, not a crate's side
 };
 
 struct FootContacts {
@@ -25,6 +26,8 @@ struct FootContacts {
   double normal_force[2] = {0.0, 0.0};  // world z force on the foot over those contacts, last solve (N)
   bool on_ground[2] = {false, false};  // a ground contact of the foot within `load`
   std::vector<Eigen::Vector2d> ground_points[2];  // those contacts' points (floor x, y), in contact order
+  // one of them on a top (its normal up; top_normal_z): a swing foot landing, not a toe brushing a crate's side
+  bool on_top[2] = {false, false};
   bool other_link_on_ground = false;   // a link other than feet and shanks on the ground within `fallen`
 };
 

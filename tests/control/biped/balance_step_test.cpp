@@ -141,6 +141,25 @@ TEST(StartBalanceStep, LandsFlatOnOneTopAndClearsTheHighestOnTheWay) {
   EXPECT_NEAR(end.z(), s.to_top - t.press, 1e-12);
 }
 
+TEST(StartBalanceStep, ThePathsTopCountsACrateBesideThePathUnderTheSolesEdge) {
+  // A straight step along x at y = 0 on a floor 0.28 m high, beside a crate 0.44 m high whose side is at y = 0.07:
+  // the path's line never crosses the crate, the sole's edge (half width 5 cm, plus the foothold's side margin)
+  // does. Counted from the line alone, the swing brushed that side and its touch ended the step short.
+  auto terrain = [](double, double y) { return y >= 0.07 ? 0.44 : 0.28; };
+  const auto ground = eng::control::GroundHeight::of(terrain);
+  eng::control::BalanceStep s;
+  eng::control::FootGeometry g;
+  BalanceStepTuning t;
+  eng::control::start_balance_step(s, 0, false, Vector2d(0.0, 0.0), Vector2d(0.5, 0.0), Vector2d(0.0, -0.3), 0.0,
+                                   0.0, 0.3, ground, g, t.foothold);
+  EXPECT_NEAR(s.path_top, 0.44, 1e-12);
+  // A crate farther than the sole's edge and margin (side at y = 0.1) is not in the way.
+  auto far = [](double, double y) { return y >= 0.1 ? 0.44 : 0.28; };
+  eng::control::start_balance_step(s, 0, false, Vector2d(0.0, 0.0), Vector2d(0.5, 0.0), Vector2d(0.0, -0.3), 0.0,
+                                   0.0, 0.3, eng::control::GroundHeight::of(far), g, t.foothold);
+  EXPECT_NEAR(s.path_top, 0.28, 1e-12);
+}
+
 TEST(BalanceStepSoleTarget, VelocityIsThePathsDerivative) {
   eng::control::BalanceStep s;
   s.from = Vector2d(0.0, 0.0);

@@ -61,6 +61,26 @@ TEST(FootContacts, NormalForceIsTheForceOnTheFootWhicheverSideItIs) {
   EXPECT_FALSE(fc.on_ground[1]);
 }
 
+TEST(FootContacts, AContactOnACratesSideIsOnTheGroundButNotOnATop) {
+  // A swing's sole brushing a crate's side: the contact's normal is level. On the ground (the plan may load it), but
+  // not a landing on a top (a balance step's touch-down reads on_top).
+  Contact side = contact(0, 13, 0.0, 0.0, 0.1);
+  side.point.normal = Eigen::Vector3d(0.0, 1.0, 0.02).normalized();
+  FootContacts fc;
+  find_foot_contacts({side}, kBodies, bones(), FootContactThresholds{}, fc);
+  EXPECT_TRUE(fc.on_ground[0]);
+  EXPECT_FALSE(fc.on_top[0]);
+  // The same foot on the top as well (normal up, whichever body the foot is): on a top.
+  Contact top = contact(13, 0, 0.0, 0.1, 0.1);
+  top.point.normal = Eigen::Vector3d(0.05, 0.0, -1.0).normalized();
+  find_foot_contacts({side, top}, kBodies, bones(), FootContactThresholds{}, fc);
+  EXPECT_TRUE(fc.on_top[0]);
+  EXPECT_FALSE(fc.on_top[1]);
+  // A contact 1 cm away (speculative) is not on the ground, so not on a top either, whatever its normal.
+  find_foot_contacts({contact(0, 16, -0.01, 0.0, 0.0)}, kBodies, bones(), FootContactThresholds{}, fc);
+  EXPECT_FALSE(fc.on_top[1]);
+}
+
 TEST(FootContacts, OnlyLinksOtherThanFeetAndShanksOnTheGroundCountAsFallen) {
   FootContacts fc;
   find_foot_contacts({contact(0, 12, 0.0, 0, 0), contact(0, 16, 0.0, 0, 0)}, kBodies, bones(), {}, fc);
