@@ -147,6 +147,24 @@ double assist_reach(const eng::physics::Model& m, const Boxer& b) {
   return root_assist_limit(b) / (b.control_body.total_mass * m.gravity.norm());
 }
 
+void observe_push(const eng::physics::Model& m, const eng::physics::Data& d, Boxer& b, double dt) {
+  eng::control::BalanceStepState& st = b.ctl.balance_steps;
+  const auto [lo, hi] = std::minmax_element(b.bodies.body.begin(), b.bodies.body.end());  // the boxer's bodies
+  Eigen::Vector2d f = Eigen::Vector2d::Zero();
+  for (const eng::physics::Contact& c : d.contacts) {  // the ground's (static body 0) forces on the boxer
+    if (c.body_a == 0 && c.body_b >= *lo && c.body_b <= *hi) f += c.force.head<2>();
+    if (c.body_b == 0 && c.body_a >= *lo && c.body_a <= *hi) f -= c.force.head<2>();
+  }
+  const double mass = b.control_body.total_mass;
+  const Eigen::Vector2d vcom = eng::physics::spatial_momentum(m, d, b.bodies.body[0]).tail<3>().head<2>() / mass;
+  if (st.push_have_vcom) {
+    const Eigen::Vector2d acc = (vcom - st.push_vcom) / dt - f / mass;
+    st.push_acc += std::min(1.0, dt / b.settings.tuning.balance_step.push_filter_tau) * (acc - st.push_acc);
+  }
+  st.push_vcom = vcom;
+  st.push_have_vcom = true;
+}
+
 // BALANCE STEPS (balance_step.h): Yin & van de Panne's three phases on the balance QP. Measurements:
 // docs/decisions/balance-steps.md.
 void take_balance_steps(const eng::physics::Model& m, const eng::physics::Data& d,
@@ -192,8 +210,9 @@ void take_balance_steps(const eng::physics::Model& m, const eng::physics::Data& 
     // sole brushing a crate's side (the contact's normal level) had ended swings 20-30 cm short, in the air
     // (docs/decisions/balance-steps.md, seventh round).
     const bool down = b.ctl.contacts.on_top[s.foot] && s.elapsed > 0.6 * s.duration;
-    if (!s.returning && s.elapsed < t.replan_until * s.duration && !corners[1 - s.foot].empty()) {
-      // Re-planned from the body's state now, for the swing's time left.
+    const bool pushed = st.push_acc.norm() > t.push_acc && s.elapsed < t.push_replan_until * s.duration;
+    if (!s.returning && (s.elapsed < t.replan_until * s.duration || pushed) && !corners[1 - s.foot].empty()) {
+      // Re-planned from the body's state now, for the swing's time left (longer while the push still acts).
       eng::control::convex_hull_2d(corners[1 - s.foot], stance_hull);
       eng::control::BalanceStepTuning left = t;
       left.min_duration = std::max(0.05, s.duration - s.elapsed);

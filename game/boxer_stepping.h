@@ -21,6 +21,11 @@ void plan_steps(const eng::physics::Data& d, const eng::assets::CharacterDesc& d
 // How far beyond the feet the root assist (the root spring's torque, its limit scaled by consciousness) moves the
 // centroidal moment pivot: tau / (m g) (Popovic, Goswami & Herr 2005), m; 0 without a root spring.
 double assist_reach(const eng::physics::Model& m, const Boxer& b);
+// The push observer, after each physics step (its contact forces solved): the com's horizontal acceleration over the
+// step less what the ground's contacts gave it, m a = F_ground + F_push (gravity is vertical): a push at the chest, a
+// punch, a thrown crate, the player's hand. Low-passed into b.ctl.balance_steps.push_acc (m/s^2); read by
+// take_balance_steps (a landing is re-planned until the push is over).
+void observe_push(const eng::physics::Model& m, const eng::physics::Data& d, Boxer& b, double dt);
 // Balance steps (balance_step.h), after plan_steps: a step of the balance's own overrides the clip's feet (swing,
 // b.ctl.step) while it lasts; started when the capture point leaves the feet, or to return to the stance after.
 void take_balance_steps(const eng::physics::Model& m, const eng::physics::Data& d,

@@ -9,6 +9,7 @@
 #include "engine/control/servo/implicit_servo.h"
 #include "engine/physics/dynamics.h"
 #include "engine/physics/step.h"
+#include "game/boxer_stepping.h"
 #include "game/boxing_motion.h"
 #include "game/rng.h"
 #include "game/scenarios/scenario_hooks.h"
@@ -335,6 +336,7 @@ void step_world(World& w) {
   eng::physics::step2(w.model, w.data, physics_stages);
   const auto t3 = clock::now();
   for (Boxer& b : w.boxers) boxer_sense_contacts(w.data, b);
+  for (Boxer& b : w.boxers) observe_push(w.model, w.data, b, kPhysicsDt);
   for (Boxer& b : w.boxers) boxer_measure(w.model, w.data, w.boxer_desc, b, kPhysicsDt);
   interaction_after_step(w);  // (the scenario's after_step reads this step's object hits)
   health_after_step(w);

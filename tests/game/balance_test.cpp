@@ -242,12 +242,65 @@ TEST(BalanceSteps, YinsForwardSidewaysLeftAndBackwardBarsAreSteppedOutOfOnSeeds1
 
 TEST(BalanceSteps, YinsPushToTheRightIsSteppedOutOfWhereTheStepsLandClearOfHigherTops) {
   // 394 N x 0.2 s to the right (1.05 m/s; Yin's sideways bar), toward the rear foot: the lead foot crosses over, the
-  // rear follows, toward the platform's edge 1 m away. Seeds 1-8 survive 5 (3 before the crossing steps' landings were
-  // kept clear of higher tops, the com let fall as the LIP during the swing, and a cross-over put ahead or behind the
-  // stance foot where the capture point is; seeds 4 and 6 fell then). Seeds 2, 5 and 7 still fall (README).
+  // rear follows, toward the platform's edge 1 m away. Seeds 1-8 survive 8 on the machine the README was measured on
+  // (3 before the crossing steps' landings were kept clear of higher tops, the com let fall as the LIP during the
+  // swing, and a cross-over put ahead or behind the stance foot where the capture point is; 5 before a swing brushing
+  // a crate's side stopped counting as its landing). The five asserted here stood through all of those rounds: the
+  // recoveries are chaotic enough that a last-bit difference between machines moves a seed or two.
   for (const char* seed : {"1", "3", "4", "6", "8"}) {
     const auto m = run({"--scenario", "push", "--seed", seed, "--push-dir", "270", "--push-force", "394",
                         "--push-duration", "0.2", "--push-at", "2", "--stepping", "on"},
+                       7.0);
+    EXPECT_GE(m.balance_steps, 1) << "seed " << seed;
+    EXPECT_FALSE(m.fell) << "seed " << seed << ": fell at " << m.fell_at << " s (" << m.fell_reason << ")";
+  }
+}
+
+TEST(BalanceSteps, ThePushObserverReadsTheChestPushAsItsForceOverTheMass) {
+  // observe_push (after each physics step): the com's horizontal acceleration less what the ground's contact forces
+  // give it. A 394 N push to the right for 0.2 s on the 75 kg boxer accelerates it at 5.25 m/s^2, which the ground's
+  // forces do not explain; standing before it and after it, the ground explains all of it.
+  auto o = boxing::parse_cli({"--scenario", "push", "--seed", "1", "--push-dir", "270", "--push-force", "394",
+                              "--push-duration", "0.2", "--push-at", "2", "--stepping", "on"});
+  ASSERT_TRUE(o.ok()) << o.error();
+  auto w = boxing::make_world(*o);
+  ASSERT_TRUE(w.ok()) << w.error();
+  boxing::World& world = **w;
+  const boxing::Boxer& b = world.boxers[0];
+  const double expected = 394.0 / b.control_body.total_mass;
+  double before = 0.0, during_min = 1e9, during_max = 0.0, after_sum = 0.0;
+  Eigen::Vector2d during_sum = Eigen::Vector2d::Zero();
+  int n = 0, after_n = 0, after_over = 0;
+  while (world.data.time < 4.0) {
+    boxing::step_world(world);
+    const Eigen::Vector2d a = b.ctl.balance_steps.push_acc;
+    const double t = world.data.time;
+    if (t > 1.0 && t < 2.0) before = std::max(before, a.norm());
+    if (t > 2.05 && t < 2.2) {  // past the filter's rise (10 ms)
+      during_min = std::min(during_min, a.norm()), during_max = std::max(during_max, a.norm());
+      during_sum += a, ++n;
+    }
+    if (t > 2.5) after_sum += a.norm(), ++after_n, after_over += a.norm() > b.settings.tuning.balance_step.push_acc;
+  }
+  EXPECT_LT(before, 0.5);
+  EXPECT_NEAR(during_sum.x() / n, 0.0, 0.3);
+  EXPECT_NEAR(during_sum.y() / n, -expected, 0.1 * expected);  // heading 0: to the right is -y
+  EXPECT_GT(during_min, 0.7 * expected);
+  EXPECT_LT(during_max, 1.3 * expected);
+  // After it, through the recovery's steps: small on average; a landing's impact reads for a few milliseconds (its
+  // contact forces change within the step), under the re-planning's threshold nearly all the time.
+  EXPECT_LT(after_sum / after_n, 0.5);
+  EXPECT_LT(after_over, after_n / 20);
+}
+
+TEST(BalanceSteps, ALongerPushIsSteppedOutOfByALandingReplannedUntilThePushEnds) {
+  // Yin's sideways momentum (79 kg m/s) as 197 N for 0.4 s to the right: the first step starts while the push has
+  // 0.3 s to go. Re-planned only for the first 40% of its swing it landed short and the boxer fell on these seeds;
+  // re-planned while the push observer still reads the push, it stands (seeds 1-48: 127 of 144 such pushes stood
+  // across forward, left and right, 109 before; docs/decisions/balance-steps.md, seventh round).
+  for (const char* seed : {"5", "6"}) {
+    const auto m = run({"--scenario", "push", "--seed", seed, "--push-dir", "270", "--push-force", "197",
+                        "--push-duration", "0.4", "--push-at", "2", "--stepping", "on"},
                        7.0);
     EXPECT_GE(m.balance_steps, 1) << "seed " << seed;
     EXPECT_FALSE(m.fell) << "seed " << seed << ": fell at " << m.fell_at << " s (" << m.fell_reason << ")";

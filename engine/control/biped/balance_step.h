@@ -45,6 +45,13 @@ struct BalanceStepTuning {
   double pass_clearance = 0.16;  // m, ... and the swing passing it keeps its sole centre this far from the stance's
   double replan_until = 0.4;     // the landing is re-planned every tick from the body's state until this fraction of the swing
   double replan_move = 0.02;     // m, ... and the foothold searched again when the plan moved this far
+  // ... or, while a push still accelerates the com by more than push_acc (m/s^2; the push observer's, ~150 N on the
+  // boxer), until push_replan_until: a landing frozen while the push still acted came down short. 0.4 s pushes of
+  // Yin's momentum (forward 207 N, sideways 197 N), seeds 1-48: 127 of 144 stood, 109 without; Yin's own 0.2 s pushes
+  // as before (docs/decisions/balance-steps.md, seventh round)
+  double push_acc = 2.0;
+  double push_replan_until = 0.6;
+  double push_filter_tau = 0.01;  // s, the observer's low-pass
   double late = 0.15;            // s, a swing not touching down this long after its duration is set down anyway
   double settle_speed = 0.15;    // m/s, com speed under which the return phase may start (Yin's gamma)
   double settle_time = 0.4;      // s, ... for this long, after the last landing
@@ -94,6 +101,10 @@ struct BalanceStepState {
   int shifting = -1;          // phase 3: this foot will step back once the weight is over the other (-1: none)
   double shift_time = 0.0;    // s shifting so far
   Eigen::Vector2d return_to = Eigen::Vector2d::Zero();  // where it steps back to (sole centre)
+  // The push observer (the caller's, after each physics step): the com's horizontal acceleration less what the
+  // ground's contact forces give it, low-passed (push_filter_tau), and the com velocity it was differenced from.
+  Eigen::Vector2d push_acc = Eigen::Vector2d::Zero(), push_vcom = Eigen::Vector2d::Zero();
+  bool push_have_vcom = false;
 };
 
 // The linear inverted pendulum's natural frequency sqrt(g / z).
