@@ -80,7 +80,7 @@ TEST(WorldAlloc, GraphWalkStepAllocatesNothingOnceWarm) {
 }
 
 // A push's recovery (a balance step: its landing re-planned and searched for a foothold every tick of the swing's
-// first 40%) allocates nothing once a first recovery has warmed it.
+// first 40%, or 60% while the push observer reads the push) allocates nothing once a first recovery has warmed it.
 TEST(WorldAlloc, PushRecoveryWithBalanceStepsAllocatesNothingOnceWarm) {
   // Seed 2: both pushes are caught by steps (seed 1's second push, from the stance its first recovery left, floored
   // the boxer once the swings stopped ending on a crate's side: chaos, not allocation).
