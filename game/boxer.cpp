@@ -44,6 +44,10 @@ double root_assist_limit(const Boxer& b) {
   return b.settings.root_params.enabled ? b.settings.root_params.max_torque * b.ctl.root_spring.consciousness() : 0.0;
 }
 
+double assist_reach(const eng::physics::Model& m, const Boxer& b) {
+  return root_assist_limit(b) / (b.control_body.total_mass * m.gravity.norm());
+}
+
 void boxer_joint_speed_limits(eng::physics::Model& m, const Boxer& b, double time) {
   const bool limp = b.ctl.state.fallen() || b.ctl.state.state == BoxerState::GettingUp || time < b.ctl.handled_until;
   for (int body : b.bodies.body) m.bodies[body].max_speed = limp ? kLimpJointMaxSpeed : 0.0;

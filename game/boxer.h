@@ -204,6 +204,9 @@ void boxer_joint_speed_limits(eng::physics::Model& m, const Boxer& b, double tim
 // The root assist's torque limit now (N m): the root spring's, scaled by consciousness (the paper's Fig. 7: the root
 // spring "lowers its motor gains when knocked out"); 0 without a root spring.
 double root_assist_limit(const Boxer& b);
+// How far beyond the feet that assist moves the centroidal moment pivot: tau / (m g) (Popovic, Goswami & Herr 2005),
+// m; 0 without a root spring. The balance steps' trigger and the balance step's swing pivot read it.
+double assist_reach(const eng::physics::Model& m, const Boxer& b);
 
 // After a physics step: the metrics (upright time, com speed, tracking error, trace), then the state machine (a
 // fall: Guard -> Down), which the metrics then record.

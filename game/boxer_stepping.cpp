@@ -143,13 +143,10 @@ void plan_steps(const eng::physics::Data& d, const eng::assets::CharacterDesc& d
 
 namespace boxing {
 
-double assist_reach(const eng::physics::Model& m, const Boxer& b) {
-  return root_assist_limit(b) / (b.control_body.total_mass * m.gravity.norm());
-}
-
 void observe_push(const eng::physics::Model& m, const eng::physics::Data& d, Boxer& b, double dt) {
   eng::control::BalanceStepState& st = b.ctl.balance_steps;
-  const auto [lo, hi] = std::minmax_element(b.bodies.body.begin(), b.bodies.body.end());  // the boxer's bodies
+  // The boxer's bodies: one run of indices (add_character adds a character's bodies together).
+  const auto [lo, hi] = std::minmax_element(b.bodies.body.begin(), b.bodies.body.end());
   Eigen::Vector2d f = Eigen::Vector2d::Zero();
   for (const eng::physics::Contact& c : d.contacts) {  // the ground's (static body 0) forces on the boxer
     if (c.body_a == 0 && c.body_b >= *lo && c.body_b <= *hi) f += c.force.head<2>();

@@ -18,9 +18,6 @@ void gate_lift_off(const eng::physics::Model& m, const eng::physics::Data& d, co
 // The step planner (step_planner.h) on the placed desired pose: b.ctl.step.
 void plan_steps(const eng::physics::Data& d, const eng::assets::CharacterDesc& desc, const Arena& arena, Boxer& b,
                 const bool swing[2], double dt);
-// How far beyond the feet the root assist (the root spring's torque, its limit scaled by consciousness) moves the
-// centroidal moment pivot: tau / (m g) (Popovic, Goswami & Herr 2005), m; 0 without a root spring.
-double assist_reach(const eng::physics::Model& m, const Boxer& b);
 // The push observer, after each physics step (its contact forces solved): the com's horizontal acceleration over the
 // step less what the ground's contacts gave it, m a = F_ground + F_push (gravity is vertical): a push at the chest, a
 // punch, a thrown crate, the player's hand. Low-passed into b.ctl.balance_steps.push_acc (m/s^2); read by

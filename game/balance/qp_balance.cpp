@@ -16,7 +16,6 @@
 #include "game/balance/com_support.h"
 #include "game/balance/stand_up.h"
 #include "game/boxer.h"
-#include "game/boxer_stepping.h"
 
 namespace boxing {
 
