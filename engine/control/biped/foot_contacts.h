@@ -21,7 +21,15 @@ struct FootContactThresholds {
   double top_normal_z = 0.7;  // a ground contact whose normal's z is at least this is on a top, not a crate's side
 };
 
+// Ground contacts a foot's list holds without growing (its capacity from construction): a sole over four crate tops
+// at the narrowphase's 4 points a pair is 16; twice that. A list growing past its warm-up size mid-recovery was an
+// allocation in the world's step (tests/game/world_alloc_test.cpp).
+inline constexpr int kFootContactCapacity = 32;
+
 struct FootContacts {
+  FootContacts() {
+    for (std::vector<Eigen::Vector2d>& p : ground_points) p.reserve(kFootContactCapacity);
+  }
   bool support[2] = {false, false};    // a contact of the foot within `support`, with any other body
   double normal_force[2] = {0.0, 0.0};  // world z force on the foot over those contacts, last solve (N)
   bool on_ground[2] = {false, false};  // a ground contact of the foot within `load`
