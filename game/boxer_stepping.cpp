@@ -230,15 +230,19 @@ void take_balance_steps(const eng::physics::Model& m, const eng::physics::Data& 
     for (int k = 0; k < 2; ++k) pts.insert(pts.end(), corners[k].begin(), corners[k].end());
     eng::control::convex_hull_2d_in_place(pts, b.scratch.hull);
     const double out = eng::control::outside_distance(b.scratch.hull, xi);
-    const int k = eng::control::unloaded_foot(vcom, sole);
+    // The stepping foot: the one farther from the capture point; with one foot off the ground, Yin's rule (the
+    // push's direction) says which the push unloaded.
+    std::vector<Eigen::Vector2d>* sole_hull = b.scratch.sole_hull;
+    for (int j = 0; j < 2; ++j) eng::control::convex_hull_2d(corners[j], sole_hull[j]);
+    const int k = !corners[0].empty() && !corners[1].empty() ? eng::control::stepping_foot(sole_hull, xi)
+                                                              : eng::control::unloaded_foot(vcom, sole);
     const std::vector<Eigen::Vector2d>& stance_pts = corners[1 - k];
     const double reach = t.assist_reach_share * assist_reach(m, b);  // what the root assist holds in place
     if (b.settings.stepping && out > t.trigger_margin + reach && vcom.norm() > t.min_speed && !stance_pts.empty() &&
         st.steps_in_recovery < t.max_steps) {
-      // PHASE 1, change of support: the unloaded leg steps to where the body can stop.
-      eng::control::convex_hull_2d(stance_pts, stance_hull);
+      // PHASE 1, change of support: the foot the push unloaded steps to where the body can stop.
       const eng::control::StepLanding land = eng::control::place_balance_step(
-          b.settings.placement, com.head<2>(), vcom, omega, sole[k], sole[1 - k], stance_hull, b.stance.heading,
+          b.settings.placement, com.head<2>(), vcom, omega, sole[k], sole[1 - k], sole_hull[1 - k], b.stance.heading,
           &b.ctl.step_lqr, t);
       eng::control::start_balance_step(s, k, false, sole[k], land.to, sole[1 - k], t.pass_clearance, yaw[k],
                                        land.duration, ground, g, t.foothold);

@@ -256,6 +256,21 @@ TEST(BalanceSteps, YinsPushToTheRightIsSteppedOutOfWhereTheStepsLandClearOfHighe
   }
 }
 
+TEST(BalanceSteps, ACapturePointCreepingOutOfALongDiagonalStanceIsSteppedOutOfByTheFootFartherFromIt) {
+  // 394 N x 0.2 s to the left, seeds 5 and 16: the rear foot crosses behind and the com all but stops over a stance
+  // 0.6-0.9 m long, then creeps out across it (0.1-0.2 m/s). The second step lifted the foot nearer the capture point
+  // (Yin's rule, read from a crawling com's direction), the swing over the far foot threw the com at 1 m/s, and the
+  // steps after it ran the boxer off the platform (seed 16) or down onto it (seed 5). The foot farther from the
+  // capture point steps now (stepping_foot) and both stand.
+  for (const char* seed : {"5", "16"}) {
+    const auto m = run({"--scenario", "push", "--seed", seed, "--push-dir", "90", "--push-force", "394",
+                        "--push-duration", "0.2", "--push-at", "2", "--stepping", "on"},
+                       8.0);
+    EXPECT_GE(m.balance_steps, 2) << "seed " << seed;
+    EXPECT_FALSE(m.fell) << "seed " << seed << ": fell at " << m.fell_at << " s (" << m.fell_reason << ")";
+  }
+}
+
 TEST(BalanceSteps, ThePushObserverReadsTheChestPushAsItsForceOverTheMass) {
   // observe_push (after each physics step): the com's horizontal acceleration less what the ground's contact forces
   // give it. A 394 N push to the right for 0.2 s on the 75 kg boxer accelerates it at 5.25 m/s^2, which the ground's

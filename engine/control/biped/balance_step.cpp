@@ -37,6 +37,10 @@ int unloaded_foot(const Eigen::Vector2d& vcom, const Eigen::Vector2d sole[2]) {
   return vcom.dot(sole[1] - sole[0]) > 0.0 ? 0 : 1;
 }
 
+int stepping_foot(const std::vector<Eigen::Vector2d> sole_hull[2], const Eigen::Vector2d& xi) {
+  return outside_distance(sole_hull[0], xi) <= outside_distance(sole_hull[1], xi) ? 1 : 0;
+}
+
 CartPoleLqr solve_cart_pole_lqr(double l, double body_mass, double cart_mass, double q) {
   // Linearised about upright (theta from vertical, com = x + l theta; Lagrange's equations):
   //   M x'' = u - m g theta,   l theta'' = g theta (M + m) / M - u / M.

@@ -122,6 +122,15 @@ double outside_distance(const std::vector<Eigen::Vector2d>& hull, const Eigen::V
 // the com toward foot 1 (v . load_line > 0) unloads foot 0.
 int unloaded_foot(const Eigen::Vector2d& vcom, const Eigen::Vector2d sole[2]);
 
+// The foot that steps when both stand: the one whose sole (its counter-clockwise hull) lies farther from the capture
+// point xi; the other carries the body toward where it is going. For a push this is Yin's unloaded foot (the com and
+// its capture point move toward the foot the push loads): on Yin's five pushes, seeds 1-96, the two rules chose alike
+// at every trigger with the com faster than 0.7 m/s. They differ when a first step has left a long diagonal stance,
+// the com nearly at rest and its capture point drifting out across the feet's line: the velocity's direction then
+// says little, Yin's rule lifted the foot nearer the capture point, and the swing over the far foot threw the com at
+// 1 m/s (left 394 N, seeds 5 and 16; docs/decisions/balance-steps.md, eighth round). Ties: foot 0 stands.
+int stepping_foot(const std::vector<Eigen::Vector2d> sole_hull[2], const Eigen::Vector2d& xi);
+
 // Kwon & Hodgins' inverted pendulum on a cart, one axis, linearised about upright: state (cart x, pendulum angle,
 // cart velocity, angular velocity), input the cart force; LQR with Q = diag(0, q, q, 0), R = 1. rest_offset returns
 // where the cart (the support) comes to rest relative to where the com is now, for a com at height l moving at v

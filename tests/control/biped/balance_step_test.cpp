@@ -48,6 +48,24 @@ TEST(UnloadedFoot, IsTheOneTheComMovesAwayFrom) {
   EXPECT_EQ(eng::control::unloaded_foot(Vector2d(0.0, -0.5), sole), 0);  // pushed right: the left leg steps
 }
 
+TEST(SteppingFoot, IsYinsUnloadedFootUnderAPushAndTheFootFartherFromTheCapturePointAtACrawl) {
+  // Pushed left over a square stance: the capture point runs toward the left foot, the right one steps, as Yin's.
+  std::vector<Vector2d> hull[2] = {sole_at(Vector2d(0.0, 0.15)), sole_at(Vector2d(0.0, -0.15))};
+  EXPECT_EQ(eng::control::stepping_foot(hull, Vector2d(0.0, 0.45)), 1);
+  EXPECT_EQ(eng::control::stepping_foot(hull, Vector2d(0.0, -0.45)), 0);
+  // A long diagonal stance after a crossing step (left 394 N, seed 16, 2.96 s): the com at a crawl (0.19, 0.11) m/s,
+  // its capture point 2 cm out across the feet's line. The velocity's component along the line is small and says the
+  // left foot is loaded, so Yin's rule lifts the right foot and leaves the body over the left one, 0.39 m from the
+  // capture point; the right sole is 0.26 m from it, so it stands and the left foot steps.
+  const Vector2d left(-0.334, 0.130), right(-0.820, 0.809), xi(-0.515, 0.562);
+  std::vector<Vector2d> diagonal[2] = {sole_at(left), sole_at(right)};
+  const Vector2d sole[2] = {left, right};
+  EXPECT_EQ(eng::control::unloaded_foot(Vector2d(0.19, 0.11), sole), 1);
+  EXPECT_NEAR(eng::control::outside_distance(diagonal[0], xi), 0.385, 0.002);
+  EXPECT_NEAR(eng::control::outside_distance(diagonal[1], xi), 0.263, 0.002);
+  EXPECT_EQ(eng::control::stepping_foot(diagonal, xi), 0);
+}
+
 TEST(CartPoleLqr, StabilisesTheLinearisedPendulumAndBringsTheCartUnderTheCom) {
   const auto lqr = eng::control::solve_cart_pole_lqr(0.95, 64.0, 11.0);
   // Stabilising: a com 10 cm ahead of the cart, moving on at 0.5 m/s, ends at rest over the cart: the cart's rest
