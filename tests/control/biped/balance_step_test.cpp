@@ -118,7 +118,9 @@ TEST(PlaceBalanceStep, StaysWithinReachAndOffTheStanceFoot) {
   land = eng::control::place_balance_step(eng::control::StepPlacement::CapturePoint, Vector2d(0.0, 0.05),
                                           Vector2d(0.0, 0.9), w, from, stance, hull, 0.0, nullptr, t);
   EXPECT_GE((land.to - stance).norm(), t.min_gap - 1e-9);
-  if (land.to.y() > stance.y() - 0.5 * t.min_gap) EXPECT_GE(std::abs(land.to.x() - stance.x()), t.cross_gap - 1e-9);
+  if (land.to.y() > stance.y() - 0.5 * t.min_gap) {
+    EXPECT_GE(std::abs(land.to.x() - stance.x()), t.cross_gap - 1e-9);
+  }
 }
 
 TEST(PlaceBalanceStep, InvertedPendulumLqrStepsFartherForAFasterCom) {

@@ -48,7 +48,9 @@ TEST(Foothold, AStraddlingSoleMovesTheLeastGridStepThatLandsItFlat) {
   for (int i = -20; i <= 20; ++i)
     for (int j = -20; j <= 20; ++j) {
       const V s(i * p.grid, j * p.grid);
-      if (s.x() * s.x() + p.lateral_cost * s.y() * s.y() < cost - 1e-12) EXPECT_FALSE(foothold_ok(a, ankle + s, 0.0)) << s.transpose();
+      if (s.x() * s.x() + p.lateral_cost * s.y() * s.y() < cost - 1e-12) {
+        EXPECT_FALSE(foothold_ok(a, ankle + s, 0.0)) << s.transpose();
+      }
     }
 }
 

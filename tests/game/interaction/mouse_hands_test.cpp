@@ -29,7 +29,7 @@ TEST(MouseHands, CameraRayAndWorldToPixelAgreeWithTheRenderersProjection) {
   const glm::mat4 view = glm::lookAtRH(c.eye, c.target, c.up);
   glm::mat4 proj = glm::perspectiveRH_ZO(glm::radians(c.fov_y_deg), float(W / H), c.znear, c.zfar);
   proj[1][1] *= -1.0f;
-  for (const Eigen::Vector3d p : {Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(0.5, 0.3, 1.6), Eigen::Vector3d(-1, 1, 0.2)}) {
+  for (const Eigen::Vector3d& p : {Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(0.5, 0.3, 1.6), Eigen::Vector3d(-1, 1, 0.2)}) {
     double px, py;
     ASSERT_TRUE(boxing::world_to_pixel(c, p, W, H, px, py));
     const glm::vec4 clip = proj * view * glm::vec4(float(p.x()), float(p.y()), float(p.z()), 1.0f);

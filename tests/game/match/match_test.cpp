@@ -44,7 +44,9 @@ TEST(Match, PunchesLandOnlyThroughTheStrikingGloveOnHeadOrTorsoAtSpeed) {
       EXPECT_TRUE(e.hit_part == "head" || e.hit_part == "torso") << e.punch << " at " << e.t;
       EXPECT_GE(e.speed, m.tuning.land_speed);
       EXPECT_GT(e.impulse, 0.0);
-      if (!resolving) EXPECT_GT(e.damage, 0.0) << e.punch << " at " << e.t;
+      if (!resolving) {
+        EXPECT_GT(e.damage, 0.0) << e.punch << " at " << e.t;
+      }
       EXPECT_FALSE(e.blocked);
     }
     if (e.blocked) {
@@ -55,7 +57,9 @@ TEST(Match, PunchesLandOnlyThroughTheStrikingGloveOnHeadOrTorsoAtSpeed) {
     bool cut_short = false;
     for (const PunchEvent& o : m.events)
       cut_short = cut_short || (o.boxer != e.boxer && o.landed && o.t <= e.t && o.t > e.t - 0.6);
-    if (e.t < w->data.time - 0.2 && !cut_short) EXPECT_GT(e.peak_speed, 0.5) << e.punch << " at " << e.t;
+    if (e.t < w->data.time - 0.2 && !cut_short) {
+      EXPECT_GT(e.peak_speed, 0.5) << e.punch << " at " << e.t;
+    }
   }
   for (int k = 0; k < 2; ++k) {
     EXPECT_EQ(m.fighter[k].thrown, thrown[k]);
