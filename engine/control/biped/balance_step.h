@@ -2,11 +2,12 @@
 // BALANCE STEPS: a step the balance takes on its own (not the clip's), when a push carries the capture point out of
 // what the feet can hold. Yin & van de Panne 2006 (sec. IV) split a stepping recovery in three phases; here:
 //   1. change of support: the leg the push unloads steps (Yin: "people step using the leg which is unloaded by the
-//      push", the sign of v_com . load line), at once (no weight shift: that leg carries little already), to where the
-//      body can stop: the capture point (Pratt et al. 2006) predicted at touch-down plus a margin (CapturePoint), or
-//      where Kwon & Hodgins' inverted pendulum on a cart comes to rest under LQR (InvertedPendulumLqr); onto a flat
-//      foothold on the crates (foothold.h). Repeated while the capture point stays outside the new support: double and
-//      multi-step recoveries come out of the same rule;
+//      push"; here the foot farther from the capture point, stepping_foot, which is that leg under a push), at once
+//      (no weight shift: that leg carries little already), to where the body can stop: the capture point (Pratt et
+//      al. 2006) predicted at touch-down plus a margin (CapturePoint), or where Kwon & Hodgins' inverted pendulum on
+//      a cart comes to rest under LQR (InvertedPendulumLqr); onto a flat foothold on the crates (foothold.h).
+//      Repeated while the capture point stays outside the new support: double and multi-step recoveries come out of
+//      the same rule;
 //   2. reduce momentum: the balance QP's com task over the new, wider support (the caller's);
 //   3. return to the stance: once the com has nearly stopped (Yin's gamma = 0.15 m/s), a slower step puts the foot
 //      that moved back where the stance has it relative to the other foot (the boxer's guard), unless the feet already
@@ -124,8 +125,9 @@ int unloaded_foot(const Eigen::Vector2d& vcom, const Eigen::Vector2d sole[2]);
 
 // The foot that steps when both stand: the one whose sole (its counter-clockwise hull) lies farther from the capture
 // point xi; the other carries the body toward where it is going. For a push this is Yin's unloaded foot (the com and
-// its capture point move toward the foot the push loads): on Yin's five pushes, seeds 1-96, the two rules chose alike
-// at every trigger with the com faster than 0.7 m/s. They differ when a first step has left a long diagonal stance,
+// its capture point move toward the foot the push loads): on Yin's five pushes, seeds 1-48, this rule applied only
+// below 0.7 m/s of com speed, or at every speed, stood and fell on the same runs. They differ when a first step has
+// left a long diagonal stance,
 // the com nearly at rest and its capture point drifting out across the feet's line: the velocity's direction then
 // says little, Yin's rule lifted the foot nearer the capture point, and the swing over the far foot threw the com at
 // 1 m/s (left 394 N, seeds 5 and 16; docs/decisions/balance-steps.md, eighth round). Ties: foot 0 stands.
