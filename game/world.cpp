@@ -144,6 +144,7 @@ void configure_boxer_control(World& w, Boxer& b) {
   if (QpBalance* q = std::get_if<QpBalance>(&b.ctl.balance)) {
     q->params.w_root_assist = b.settings.root_params.enabled ? b.settings.tuning.root.assist_price : 0.0;
     q->params.max_root_assist = b.settings.root_params.max_torque;
+    q->params.w_torque = b.settings.root_params.enabled ? b.settings.tuning.root.qp_torque_price : 0.0;
     // The per-tick contact lists at their capacity once (twice what the plan takes, kQpMaxContacts): grown past a
     // warm-up's high-water mark in a recovery, they allocated in the step (push seed 4: 9 allocations in 6 s).
     constexpr int contacts = 2 * eng::control::kQpMaxContacts;
@@ -151,7 +152,6 @@ void configure_boxer_control(World& w, Boxer& b) {
     q->out.contact_force.reserve(contacts);
     q->pts.reserve(contacts);
     q->hull.reserve(contacts);
-    q->params.w_torque = b.settings.root_params.enabled ? b.settings.tuning.root.qp_torque_price : 0.0;
     const auto& skel = w.boxer_desc.skeleton;
     q->trunk.assign(skel.size(), 0);
     q->arm.assign(skel.size(), 0);

@@ -184,6 +184,17 @@ TEST(Fall, AFallenBoxerGoesLimpAndStaysBounded) {
 
 namespace {
 
+// A push at the chest with balance steps on (the push lab's protocol), stepped out of: at least min_steps balance
+// steps taken and the boxer up at the end.
+void expect_stepped_out_of(const char* seed, const char* dir, const char* force, const char* duration, double seconds,
+                           int min_steps) {
+  const auto m = run({"--scenario", "push", "--seed", seed, "--push-dir", dir, "--push-force", force, "--push-duration",
+                      duration, "--push-at", "2", "--stepping", "on"},
+                     seconds);
+  EXPECT_GE(m.balance_steps, min_steps) << "seed " << seed;
+  EXPECT_FALSE(m.fell) << "seed " << seed << ": fell at " << m.fell_at << " s (" << m.fell_reason << ")";
+}
+
 TEST(BalanceSteps, APushCarryingTheCapturePointOutIsMetWithAStepWhereInPlaceFalls) {
   // 400 N x 0.2 s from behind (80 kg m/s, 1.07 m/s of com velocity), seeds 1-3: in place the boxer falls; with
   // balance steps (the push lab's default) it steps and stays up. (Across the lab's grid the steps win only some
@@ -248,13 +259,7 @@ TEST(BalanceSteps, YinsPushToTheRightIsSteppedOutOfWhereTheStepsLandClearOfHighe
   // a crate's side stopped counting as its landing; 8 before the farther foot stepped at a crawl, which moved seed 7
   // off the platform's side). The five asserted here stood through all of those rounds: the recoveries are chaotic
   // enough that a last-bit difference between machines moves a seed or two.
-  for (const char* seed : {"1", "3", "4", "6", "8"}) {
-    const auto m = run({"--scenario", "push", "--seed", seed, "--push-dir", "270", "--push-force", "394",
-                        "--push-duration", "0.2", "--push-at", "2", "--stepping", "on"},
-                       7.0);
-    EXPECT_GE(m.balance_steps, 1) << "seed " << seed;
-    EXPECT_FALSE(m.fell) << "seed " << seed << ": fell at " << m.fell_at << " s (" << m.fell_reason << ")";
-  }
+  for (const char* seed : {"1", "3", "4", "6", "8"}) expect_stepped_out_of(seed, "270", "394", "0.2", 7.0, 1);
 }
 
 TEST(BalanceSteps, ACapturePointCreepingOutOfALongDiagonalStanceIsSteppedOutOfByTheFootFartherFromIt) {
@@ -263,13 +268,7 @@ TEST(BalanceSteps, ACapturePointCreepingOutOfALongDiagonalStanceIsSteppedOutOfBy
   // (Yin's rule, read from a crawling com's direction), the swing over the far foot threw the com at 1 m/s, and the
   // steps after it ran the boxer off the platform (seed 16) or down onto it (seed 5). The foot farther from the
   // capture point steps now (stepping_foot) and both stand.
-  for (const char* seed : {"5", "16"}) {
-    const auto m = run({"--scenario", "push", "--seed", seed, "--push-dir", "90", "--push-force", "394",
-                        "--push-duration", "0.2", "--push-at", "2", "--stepping", "on"},
-                       8.0);
-    EXPECT_GE(m.balance_steps, 2) << "seed " << seed;
-    EXPECT_FALSE(m.fell) << "seed " << seed << ": fell at " << m.fell_at << " s (" << m.fell_reason << ")";
-  }
+  for (const char* seed : {"5", "16"}) expect_stepped_out_of(seed, "90", "394", "0.2", 8.0, 2);
 }
 
 TEST(BalanceSteps, ThePushObserverReadsTheChestPushAsItsForceOverTheMass) {
@@ -314,13 +313,7 @@ TEST(BalanceSteps, ALongerPushIsSteppedOutOfByALandingReplannedUntilThePushEnds)
   // 0.3 s to go. Re-planned only for the first 40% of its swing it landed short and the boxer fell on these seeds;
   // re-planned while the push observer still reads the push, it stands (seeds 1-48: 127 of 144 such pushes stood
   // across forward, left and right, 109 before; docs/decisions/balance-steps.md, seventh round).
-  for (const char* seed : {"5", "6"}) {
-    const auto m = run({"--scenario", "push", "--seed", seed, "--push-dir", "270", "--push-force", "197",
-                        "--push-duration", "0.4", "--push-at", "2", "--stepping", "on"},
-                       7.0);
-    EXPECT_GE(m.balance_steps, 1) << "seed " << seed;
-    EXPECT_FALSE(m.fell) << "seed " << seed << ": fell at " << m.fell_at << " s (" << m.fell_reason << ")";
-  }
+  for (const char* seed : {"5", "6"}) expect_stepped_out_of(seed, "270", "197", "0.4", 7.0, 1);
 }
 
 // The planted feet's slide (BoxerMetrics::foot_slide): a boxer standing in guard does not slide its feet (the metric
