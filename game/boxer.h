@@ -51,6 +51,7 @@ struct BoxerMetrics {
   Eigen::Vector2d step_travel[2] = {Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero()};  // the clip's (world)
   int balance_steps = 0, return_steps = 0;  // balance QP: steps the balance took (balance_step.h), steps back to the stance
   int most_steps_in_recovery = 0;           // the longest multi-step recovery
+  int late_landings = 0;  // balance steps set down by time, their sole not on a top (BalanceStepTuning::late)
   double max_com_speed = 0.0;
   // How far each foot's sole centre slid over the ground while planted, upright (m): per planting (the foot on the
   // ground, no step carrying it) the distance from where it was set down to where it is or lifted, summed over the

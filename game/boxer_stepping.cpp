@@ -220,6 +220,7 @@ void take_balance_steps(const eng::physics::Model& m, const eng::physics::Data& 
       eng::control::replan_balance_step(s, land.to, ground, g, t.foothold, t);
     }
     if (down || s.elapsed > s.duration + t.late) {
+      if (!down && !s.returning) ++b.metrics.late_landings;
       s.active = false;
       st.settled = 0.0;
     }
@@ -303,10 +304,9 @@ void take_balance_steps(const eng::physics::Model& m, const eng::physics::Data& 
   Eigen::Vector3d velocity;
   const Eigen::Vector3d target = eng::control::balance_step_sole_target(s, t, &velocity);
   const Eigen::Quaterniond R(Eigen::AngleAxisd(s.yaw, Eigen::Vector3d::UnitZ()));
-  const Eigen::Vector3d sole_offset(g.centre.x(), g.centre.y(), g.heel.z());  // the sole's centre from the ankle
   eng::control::StepPlan& plan = b.ctl.step[k];
   plan.active = true;
-  plan.target = target - R * sole_offset;
+  plan.target = target - R * g.sole_offset();
   plan.clip_z = plan.target.z();
   plan.has_velocity = true;
   plan.velocity = velocity;

@@ -429,6 +429,7 @@ nlohmann::json world_report(const World& w) {
                       {"balance_steps", m.balance_steps},
                       {"return_steps", m.return_steps},
                       {"most_steps_in_recovery", m.most_steps_in_recovery},
+                      {"late_landings", m.late_landings},
                       {"fell_pelvis_m", {m.fell_pelvis.x(), m.fell_pelvis.y(), m.fell_pelvis.z()}},
                       {"fell_reason", m.fell_reason},
                       {"time_upright_s", m.time_upright},

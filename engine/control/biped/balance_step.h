@@ -65,6 +65,16 @@ struct BalanceStepTuning {
   double return_duration = 0.45;   // s, the return step's swing (unhurried)
   double return_shift_margin = 0.02;  // m, it lifts once the capture point is this far inside the other sole ...
   double return_shift_max = 1.0;      // s, ... and is given up when the weight shift takes longer
+  // The swing leg lands with at most this share of its length (hip to ankle, knee straight) between its hip and the
+  // landing's ankle: for a landing lower than that, the com comes down (the stance knee bends; step_reach_drop, the
+  // balance QP's com height task, at most its max_com_acc). Held at the clip's height, the com stayed up (it rose 6 cm
+  // as the body leaned over the stance foot's higher crate) and a crossing step sent to a top 0.22 m below the
+  // stance's hung 10 cm over it, knee straight, until the swing's time ran out and the body fell (right 394 N, seed
+  // 24). Yin's five pushes, seeds 1-48 / 49-96: 230 / 230 of 240 stand (225 / 218 without), and no landing is set
+  // down by time (15 of 489 steps before, 9 of those runs fell). Shares 0.9, 0.93, 0.95, 0.97 and 1.0 (an earlier
+  // build, seeds 1-48): 230, 229, 233, 232 and, on 49-96, 225 for 1.0 (docs/decisions/balance-steps.md, ninth round).
+  double reach_share = 0.95;
+  double reach_max_drop = 0.25;  // m, the com is sent at most this far below where it is
   int max_steps = 6;             // balance steps in one recovery (a multi-step stop), then the fall is let happen
   // Where a balance step may land (foothold.h): wider margins than the clips' steps, since a recovery's landing
   // misses by 5 cm (median; 14 cm at the 90th percentile): the sole's core 3.5 cm inside its top's sides (1.5) and no
@@ -171,6 +181,12 @@ Eigen::Vector2d balance_step_path(const BalanceStep& s, double e, Eigen::Vector2
 // centre of pressure not where the plan put it): the foothold is searched again when it moved replan_move or more.
 void replan_balance_step(BalanceStep& s, const Eigen::Vector2d& to, GroundHeight ground, const FootGeometry& g,
                          const FootholdParams& fp, const BalanceStepTuning& t);
+
+// How far the hip must come down for a leg `leg` long (hip to ankle, knee straight) to reach `ankle` from `hip`
+// with `share` of its length: 0 when it reaches already, at most max_drop (a landing too far out sideways is not
+// reached by crouching).
+double step_reach_drop(const Eigen::Vector3d& hip, const Eigen::Vector3d& ankle, double leg, double share,
+                       double max_drop);
 
 // The swing's sole-centre target at the step's elapsed time (world): horizontal C1 ease along the path, lifted
 // over the path's highest top by `lift` mid-swing, set down `press` into the landing top at the end.

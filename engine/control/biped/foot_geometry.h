@@ -9,6 +9,8 @@ struct FootGeometry {
   Eigen::Vector3d centre{0.05, 0.0, 0.0};   // middle of the sole, at ankle height (support centres, footholds)
   Eigen::Vector3d heel{-0.08, 0.0, -0.08};  // the sole's ends: the sole's lowest point is one of them
   Eigen::Vector3d toe{0.18, 0.0, -0.08};
+  // The sole's centre (on the sole) from the ankle, in the foot frame of a flat foot.
+  Eigen::Vector3d sole_offset() const { return {centre.x(), centre.y(), heel.z()}; }
 };
 
 }  // namespace eng::control

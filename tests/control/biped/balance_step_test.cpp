@@ -247,4 +247,22 @@ TEST(StartBalanceStep, ACrossOversPathPassesTheStanceFootAtTheClearanceAndAPlain
   EXPECT_NEAR((eng::control::balance_step_path(s, 0.5) - 0.5 * (s.from + s.to)).norm(), 0.0, 1e-12);
 }
 
+// How far the hip comes down for the swing leg to reach a landing below it: the circle of radius share * leg about
+// the hip, cut at the landing's horizontal distance (closed form), and nothing for a landing already within it.
+TEST(StepReachDrop, IsTheHipsHeightOverTheLegsCircleAtTheLandingsDistance) {
+  const Eigen::Vector3d hip(0.0, 0.0, 1.0);
+  const double leg = 0.9, share = 0.95, reach = share * leg;
+  // 0.5 m out and 0.9 m below: the ankle reaches sqrt(reach^2 - 0.5^2) = 0.694 m down, 0.206 m short.
+  const Eigen::Vector3d low(0.3, -0.4, 0.1);
+  EXPECT_NEAR(eng::control::step_reach_drop(hip, low, leg, share, 1.0), 0.9 - std::sqrt(reach * reach - 0.25), 1e-12);
+  EXPECT_NEAR(eng::control::step_reach_drop(hip, low, leg, share, 0.1), 0.1, 1e-12);  // at most max_drop
+  // Lowered by what it asked, the hip reaches the landing at exactly share * leg.
+  const double drop = eng::control::step_reach_drop(hip, low, leg, share, 1.0);
+  EXPECT_NEAR((hip - Eigen::Vector3d(0.0, 0.0, drop) - low).norm(), reach, 1e-12);
+  // Within reach (0.4 m out, 0.6 m below: 0.72 m away): none.
+  EXPECT_EQ(eng::control::step_reach_drop(hip, Eigen::Vector3d(0.4, 0.0, 0.4), leg, share, 1.0), 0.0);
+  // Farther out than the leg reaches: crouching cannot get there; the hip comes down to the landing's height, capped.
+  EXPECT_NEAR(eng::control::step_reach_drop(hip, Eigen::Vector3d(1.0, 0.0, 0.2), leg, share, 0.25), 0.25, 1e-12);
+}
+
 }  // namespace
