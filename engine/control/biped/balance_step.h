@@ -137,10 +137,10 @@ int unloaded_foot(const Eigen::Vector2d& vcom, const Eigen::Vector2d sole[2]);
 // point xi; the other carries the body toward where it is going. For a push this is Yin's unloaded foot (the com and
 // its capture point move toward the foot the push loads): on Yin's five pushes, seeds 1-48, this rule applied only
 // below 0.7 m/s of com speed, or at every speed, stood and fell on the same runs. They differ when a first step has
-// left a long diagonal stance,
-// the com nearly at rest and its capture point drifting out across the feet's line: the velocity's direction then
-// says little, Yin's rule lifted the foot nearer the capture point, and the swing over the far foot threw the com at
-// 1 m/s (left 394 N, seeds 5 and 16; docs/decisions/balance-steps.md, eighth round). Ties: foot 0 stands.
+// left a long diagonal stance, the com nearly at rest and its capture point drifting out across the feet's line: the
+// velocity's direction then says little, Yin's rule lifted the foot nearer the capture point, and the swing over the
+// far foot threw the com at 1 m/s (left 394 N, seeds 5 and 16; docs/decisions/balance-steps.md, eighth round).
+// Ties: foot 0 stands.
 int stepping_foot(const std::vector<Eigen::Vector2d> sole_hull[2], const Eigen::Vector2d& xi);
 
 // Kwon & Hodgins' inverted pendulum on a cart, one axis, linearised about upright: state (cart x, pendulum angle,
