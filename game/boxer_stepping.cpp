@@ -57,7 +57,10 @@ void update_support_base(const eng::physics::Data& d, const Arena& arena, Boxer&
 namespace {
 eng::control::Touchdown touchdown_of(const eng::anim::Skeleton& skel, Boxer& b, int k) {
   const auto preview = [&b](double ahead) -> const eng::anim::Pose& { return b.source.preview(ahead); };
-  return eng::control::find_touchdown(skel, preview, b.bones.foot[k], b.settings.tuning.foot, b.settings.tuning.step, b.scratch.fk_W, b.scratch.fk_P);
+  eng::control::Touchdown td = eng::control::find_touchdown(skel, preview, b.bones.foot[k], b.settings.tuning.foot,
+                                                            b.settings.tuning.step, b.scratch.fk_W, b.scratch.fk_P);
+  td.apart = (b.scratch.fk_P[b.bones.foot[k]] - b.scratch.fk_P[b.bones.foot[1 - k]]).head<2>();  // (its last frame's)
+  return td;
 }
 
 }  // namespace
@@ -109,18 +112,34 @@ void gate_lift_off(const eng::physics::Model& m, const eng::physics::Data& d, co
 // STEPS ON THE CRATES (balance QP, step_planner.h): a foot the clip just lifted starts a step toward a foothold on
 // the crates; every swinging foot's ankle target advances.
 void plan_steps(const eng::physics::Data& d, const eng::assets::CharacterDesc& desc, const Arena& arena, Boxer& b,
-                const bool swing[2], double dt) {
+                bool swing[2], double dt) {
   const auto& skel = desc.skeleton;
   const int* feet = b.bones.foot;
+  const eng::control::FootGeometry& g = b.settings.tuning.foot;
   std::vector<Eigen::Quaterniond>& W = b.scratch.fk_W;
   std::vector<Eigen::Vector3d>& P = b.scratch.fk_P;
   // A foot the clip just lifted: where (clip floor frame) and when the clip puts it down again.
   bool starts[2] = {false, false};
   eng::control::Touchdown td[2];
   for (int k = 0; k < 2; ++k) {
-    if (!swing[k]) b.ctl.step[k].active = false;
-    b.ctl.step[k].has_velocity = false;
-    if (!swing[k] || b.ctl.step[k].active) continue;
+    eng::control::StepPlan& st = b.ctl.step[k];
+    if (st.active && st.carried) {
+      // A carried step swings until its sole touches a top past the swing's middle and within a few cm of its landing
+      // (a toe brushing the crate it left is not a landing), or late: it then rests until the clip's swing ends (the
+      // clip may land the foot sooner or later than the path).
+      const int fb = b.bodies.body[feet[k]];
+      const Eigen::Vector2d sole = (d.x[fb].p + d.x[fb].R * g.centre).head<2>();
+      const bool down = b.ctl.contacts.on_top[k] && st.elapsed > 0.6 * st.duration && (sole - st.path.to).norm() < 0.06;
+      if (down || st.elapsed > st.duration + b.settings.tuning.step.carry_late || b.ctl.state.fallen())
+        st.active = false, st.landed = true;
+      else
+        swing[k] = true;
+    }
+    if (!swing[k]) st.landed = false;
+    if (st.landed) swing[k] = false;
+    if (!swing[k]) st.active = false;
+    st.has_velocity = false;
+    if (!swing[k] || st.active) continue;
     starts[k] = true;
     td[k] = touchdown_of(skel, b, k);
   }
@@ -131,11 +150,13 @@ void plan_steps(const eng::physics::Data& d, const eng::assets::CharacterDesc& d
     if (!swing[k]) continue;
     eng::control::StepPlan& st = b.ctl.step[k];
     if (starts[k]) {
-      const int fb = b.bodies.body[feet[k]];
-      const Eigen::Vector3d from = d.x[fb].p + d.x[fb].R * b.settings.tuning.foot.centre;
-      eng::control::start_step(st, td[k], P[feet[k]], b.stance.heading, from, ground, b.settings.tuning.foot, b.settings.tuning.step, dt);
+      const int fb = b.bodies.body[feet[k]], ob = b.bodies.body[feet[1 - k]];
+      const Eigen::Vector3d from = d.x[fb].p + d.x[fb].R * g.centre;
+      const Eigen::Vector3d stance = d.x[ob].p + d.x[ob].R * g.centre;
+      eng::control::start_step(st, td[k], P[feet[k]], b.stance.heading, from, ground, g, b.settings.tuning.step, dt,
+                               d.x[ob].p.head<2>(), stance.head<2>());
     }
-    eng::control::advance_step(st, P[feet[k]], W[feet[k]], ground, b.settings.tuning.foot, b.settings.tuning.step, dt);
+    eng::control::advance_step(st, P[feet[k]], W[feet[k]], ground, g, b.settings.tuning.step, dt);
   }
 }
 

@@ -15,9 +15,10 @@ void update_support_base(const eng::physics::Data& d, const Arena& arena, Boxer&
 // Lift-off gating (lift_off_gate.h): clears swing[k] for a foot held down; counts steps taken / skipped.
 void gate_lift_off(const eng::physics::Model& m, const eng::physics::Data& d, const eng::assets::CharacterDesc& desc,
                    Boxer& b, bool swing[2], double dt);
-// The step planner (step_planner.h) on the placed desired pose: b.ctl.step.
+// The step planner (step_planner.h) on the placed desired pose: b.ctl.step. A carried step (StepTuning::carry) keeps
+// its foot swinging (swing[k] true) until it touches down, and down (false) until the clip's own swing ends.
 void plan_steps(const eng::physics::Data& d, const eng::assets::CharacterDesc& desc, const Arena& arena, Boxer& b,
-                const bool swing[2], double dt);
+                bool swing[2], double dt);
 // The push observer, after each physics step (its contact forces solved): the com's horizontal acceleration over the
 // step less what the ground's contacts gave it, m a = F_ground + F_push (gravity is vertical): a push at the chest, a
 // punch, a thrown crate, the player's hand. Low-passed into b.ctl.balance_steps.push_acc (m/s^2); read by

@@ -98,6 +98,9 @@ flags:
   --step-placement capture|ipc
                          where a balance step lands: past the capture point (default) or where Kwon & Hodgins'
                          cart-pole LQR comes to rest
+  --footwork shuffle|carry
+                         balance QP: the clips' steps shuffle, the sole pressed along its crate (default), or are
+                         carried to where the clip puts the foot (experimental: the boxers really move, and fall more)
   --flat                 a level platform (every crate 0.30 m) instead of the uneven crates
   --priorities kudoh|off|auto
                          balance QP: Kudoh's priorities in guard (the trunk's posture over the com's place, the
@@ -298,6 +301,8 @@ eng::Result<Options> parse_cli(const std::vector<std::string>& args) {
       if (auto e = choice({"on", "off", "auto"}, o.stepping)) return *e;
     } else if (flag == "--step-placement") {
       if (auto e = choice({"capture", "ipc"}, o.step_placement)) return *e;
+    } else if (flag == "--footwork") {
+      if (auto e = choice({"shuffle", "carry"}, o.footwork)) return *e;
     } else if (flag == "--flat") {
       o.flat = true;
     } else if (flag == "--priorities") {

@@ -131,8 +131,22 @@ void PoseSource::tick(double dt, const Eigen::Vector2d& anchor, eng::anim::PoseS
   const Eigen::Vector3d fwd3 = s.pose.rotation[0] * Eigen::Vector3d::UnitX();
   const Eigen::Vector2d fwd = fwd3.head<2>().normalized();
   const double along = fwd.dot(drift);
-  if (!walker_->has_plan() && std::abs(along) > leash_)
+  // The repeated step lets go once the walk is back within half the leash (the walk goes on at random), or after
+  // kLeashGiveUp when the crates keep the steps from getting there (then it rests kLeashRest): kept, a walk whose
+  // steps carried it back stepped on for the rest of its ten minutes, 500 step_backs, and one whose steps could not
+  // climb onto the crate ahead looped step_forward - lead_uppercut 900 times (--footwork carry).
+  constexpr double kLeashGiveUp = 4.0, kLeashRest = 10.0;  // s
+  const bool back = std::abs(along) < 0.5 * leash_, stuck = now_ - leashed_at_ > kLeashGiveUp;
+  if (leashed_ && (back || stuck)) {
+    walker_->request_clip(kGuardClip);
+    leashed_ = false;
+    if (!back) leash_rest_until_ = now_ + kLeashRest;
+  }
+  if (!walker_->has_plan() && std::abs(along) > leash_ && now_ >= leash_rest_until_) {
     walker_->request_clip(along > 0 ? "step_back" : "step_forward", /*repeat=*/true);
+    if (!leashed_) leashed_at_ = now_;  // (asked again each tick the walk is in the step already: no plan to it)
+    leashed_ = true;
+  }
 }
 
 }  // namespace boxing

@@ -63,6 +63,9 @@ class PoseSource {
   double now_ = 0.0;
   double last_dt_ = 0.0;
   double leash_ = 0.25;
+  bool leashed_ = false;       // the leash's repeated step is asked for, since leashed_at_ (s)
+  double leashed_at_ = 0.0;
+  double leash_rest_until_ = 0.0;  // s, a leash given up (its steps got nowhere) rests until then
   mutable eng::anim::Pose preview_;
 };
 

@@ -188,7 +188,13 @@ void actuate(QpBalance& q, BalanceTick& tick) {
     const eng::control::BalanceStep& bs = b.ctl.balance_steps.step;
     const eng::control::BalanceStepTuning& ts = b.settings.tuning.balance_step;
     for (int k = 0; k < 2; ++k) {
-      const bool quick_swing = b.ctl.gate[k].lifted && b.ctl.gate[k].quick && !loaded[k];
+      // (A carried step, StepTuning::carry, goes on past the clip's touch-down, where the gate lets go: its swing
+      // too, up to the quick step's longest; a longer one, slowed to rise onto a higher crate, keeps the com task's
+      // target over the stance foot: in the LIP's fall for 0.4-0.5 s the capture point ran off and a balance step
+      // lunged 1.3 m.)
+      const eng::control::StepPlan& plan = b.ctl.step[k];
+      const bool carried = plan.active && plan.carried && plan.duration <= b.settings.tuning.gate.quick_max_swing;
+      const bool quick_swing = ((b.ctl.gate[k].lifted && b.ctl.gate[k].quick) || carried) && !loaded[k];
       const bool balance_swing = bs.active && !bs.returning && bs.foot == k;
       if (!(quick_swing || balance_swing) || in.contacts.empty()) continue;
       const double omega = eng::control::lip_omega(std::max(0.3, com_a.z() - b.ctl.support_base));
@@ -310,7 +316,7 @@ void actuate(QpBalance& q, BalanceTick& tick) {
       if (!loaded[k] && q.swing_prev[k]) v_ff = (ff_point - q.swing_target_prev[k]) / dt;
       // A balance step (balance_step.h) swings faster than the clip's and is tracked more stiffly.
       const bool quick = b.ctl.balance_steps.step.active && b.ctl.balance_steps.step.foot == k;
-      if (quick && step.has_velocity) v_ff = step.velocity;  // the path's own rate (no re-plan jumps)
+      if (step.has_velocity) v_ff = step.velocity;  // a balance or carried step: its path's rate (no re-plan jumps)
       const double max_v = quick ? tq.balance_step_speed : tq.max_swing_speed;
       if (v_ff.norm() > max_v) v_ff *= max_v / v_ff.norm();
       q.swing_target_prev[k] = ff_point;

@@ -45,22 +45,23 @@ Foothold find_foothold(GroundHeight ground, const Eigen::Vector2d& ankle, double
     int i, j;
   };
   struct Order {
-    double max_shift = -1.0, grid = 0.0, lateral_cost = 0.0;
+    double max_shift = -1.0, grid = 0.0, lateral_cost = 0.0, back_cost = 0.0;
     std::vector<Candidate> cand;
   };
   thread_local Order order;
-  if (order.max_shift != p.max_shift || order.grid != p.grid || order.lateral_cost != p.lateral_cost) {
+  if (order.max_shift != p.max_shift || order.grid != p.grid || order.lateral_cost != p.lateral_cost ||
+      order.back_cost != p.back_cost) {
     const int n = static_cast<int>(std::floor(p.max_shift / p.grid));
     order.cand.clear();
     for (int i = -n; i <= n; ++i)
       for (int j = -n; j <= n; ++j) {
         const double a = i * p.grid, c = j * p.grid;
         if (a * a + c * c > p.max_shift * p.max_shift + 1e-12) continue;
-        order.cand.push_back({a * a + p.lateral_cost * c * c, i, j});
+        order.cand.push_back({(i < 0 ? p.back_cost : 1.0) * a * a + p.lateral_cost * c * c, i, j});
       }
     std::stable_sort(order.cand.begin(), order.cand.end(),
                      [](const Candidate& x, const Candidate& y) { return x.cost < y.cost; });
-    order.max_shift = p.max_shift, order.grid = p.grid, order.lateral_cost = p.lateral_cost;
+    order.max_shift = p.max_shift, order.grid = p.grid, order.lateral_cost = p.lateral_cost, order.back_cost = p.back_cost;
   }
   Foothold r;
   if (foothold_ok(ground, ankle, yaw, p)) {

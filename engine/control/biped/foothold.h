@@ -25,6 +25,7 @@ struct FootholdParams {
   double max_shift = 0.20;    // search radius (m)
   double grid = 0.01;         // search resolution (m)
   double lateral_cost = 2.0;  // a sideways shift (across frame_yaw) costs this much more than one along it
+  double back_cost = 1.0;     // a shift against frame_yaw costs this much more than one along it (1: symmetric)
   // m, the highest top is looked for this far around the sole too: a landing beside a higher top (a crate's side, the
   // platform's edge from the floor) keeps this clear of it, so a landing that misses by a few cm does not come down on
   // that edge (0: the sole alone, the clips' steps)
@@ -43,8 +44,8 @@ struct Foothold {
   bool found = false;                               // false: nothing within max_shift (shift stays zero)
 };
 
-// The cheapest shift (|along|^2 + lateral_cost |across|^2, along = the direction frame_yaw) on the search grid
-// that makes foothold_ok true; zero when the spot is already good.
+// The cheapest shift (|along|^2, times back_cost against frame_yaw, + lateral_cost |across|^2, along = the direction
+// frame_yaw) on the search grid that makes foothold_ok true; zero when the spot is already good.
 Foothold find_foothold(GroundHeight ground, const Eigen::Vector2d& ankle, double yaw, double frame_yaw,
                        const FootholdParams& p = {});
 

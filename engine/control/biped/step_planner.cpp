@@ -1,6 +1,7 @@
 #include "engine/control/biped/step_planner.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace eng::control {
 
@@ -11,16 +12,38 @@ double clip_sole_gap(const std::vector<Eigen::Quaterniond>& W, const std::vector
 
 void start_step(StepPlan& st, const Touchdown& td, const Eigen::Vector3d& ankle_placed, double heading,
                 const Eigen::Vector3d& foot_centre_now, GroundHeight ground, const FootGeometry& g,
-                const StepTuning& t, double dt) {
+                const StepTuning& t, double dt, const Eigen::Vector2d& stance_ankle,
+                const Eigen::Vector2d& stance_centre) {
   st.active = true;
+  st.landed = false;
   st.elapsed = 0.0;
   st.duration = std::max(td.ahead, dt);
-  st.landing = ankle_placed.head<2>() + Eigen::Rotation2Dd(heading) * td.travel;
+  const Eigen::Rotation2Dd heading_R(heading);
+  st.landing = ankle_placed.head<2>() + heading_R * td.travel;
   const double yaw = heading + td.yaw;
-  st.shift = find_foothold(ground, st.landing, yaw, heading, t.foothold).shift;
+  const Eigen::Vector2d centre = Eigen::Rotation2Dd(yaw) * g.centre.head<2>();  // ankle to sole centre
   const Eigen::Vector3d& from = foot_centre_now;
-  const Eigen::Vector2d to = st.landing + st.shift + Eigen::Rotation2Dd(yaw) * g.centre.head<2>();
-  st.step_up = ground(to.x(), to.y()) > ground(from.x(), from.y()) + t.step_up_tolerance;
+  st.carried = t.carry && td.travel.norm() >= t.carry_min_travel;
+  if (!st.carried) {
+    st.shift = find_foothold(ground, st.landing, yaw, heading, t.foothold).shift;
+    const Eigen::Vector2d to = st.landing + st.shift + centre;
+    st.step_up = ground(to.x(), to.y()) > ground(from.x(), from.y()) + t.step_up_tolerance;
+    return;
+  }
+  // Carried: landed where the clip has it relative to the stance foot (the anchored placement puts it relative to
+  // both feet as they stood, so a stretched stance stayed stretched), unless the body has turned off the heading.
+  const Eigen::Vector2d relative = stance_ankle + heading_R * td.apart;
+  const Eigen::Vector2d from_ankle = from.head<2>() - centre;
+  if ((relative - from_ankle).norm() < td.travel.norm() + t.carry_max_extra) st.landing = relative;
+  // The foothold nearest it, a shift toward the stance foot preferred (along frame_yaw: toward it).
+  const Eigen::Vector2d toward = stance_centre - (st.landing + centre);
+  st.shift = find_foothold(ground, st.landing, yaw, std::atan2(toward.y(), toward.x()), t.carry_foothold).shift;
+  start_balance_step(st.path, 0, false, from.head<2>(), st.landing + st.shift + centre, stance_centre,
+                     t.carry_pass_clearance, yaw, st.duration, ground, g, t.carry_foothold);
+  st.path.asked = st.landing + centre;
+  const double rise = st.path.path_top + t.carry_lift - st.path.from_top;
+  st.duration = st.path.duration = std::max(st.duration, rise / t.carry_rise_speed);
+  st.step_up = st.path.to_top > st.path.from_top + t.step_up_tolerance;
 }
 
 void advance_step(StepPlan& st, const Eigen::Vector3d& ankle_placed, const Eigen::Quaterniond& foot_placed,
@@ -35,6 +58,16 @@ void advance_step(StepPlan& st, const Eigen::Vector3d& ankle_placed, const Eigen
   // The shuffle: the sole stays pressed to its top, except up onto a higher one (it has to clear the edge).
   const double press = st.step_up ? 0.0 : t.swing_press;
   st.target = Eigen::Vector3d(ankle_placed.x() + s.x(), ankle_placed.y() + s.y(), st.clip_z + top - press);
+  if (!st.carried) return;
+  // Carried: the sole centre on its path, and the path's velocity as the swing's feed-forward.
+  st.path.elapsed = st.elapsed;
+  BalanceStepTuning swing;
+  swing.lift = t.carry_lift;
+  swing.press = t.carry_press;
+  const Eigen::Vector3d c = balance_step_sole_target(st.path, swing, &st.velocity);
+  st.target = c - Eigen::AngleAxisd(st.path.yaw, Eigen::Vector3d::UnitZ()) * g.sole_offset();
+  st.clip_z = st.target.z();
+  st.has_velocity = true;
 }
 
 }  // namespace eng::control

@@ -6,11 +6,17 @@
 // swing (C1 ease, complete at the clip's touch-down), at the clip's lift above the highest of the tops under the
 // foot, under the shifted target and at the landing (the toe clears a higher top's edge before it gets there), and
 // pressed swing_press below it unless stepping up (a boxer's shuffle: the sole slides along its top): advance_step.
+// CARRIED STEPS (StepTuning::carry, --footwork carry): the pressed sole drags and carries the foot a tenth of the
+// clip's travel. A carried step instead swings the foot along its own path (a balance step's, balance_step.h: lift,
+// travel, set down, its velocity fed forward) from where it is to where the clip puts it relative to the stance foot
+// at touch-down (so a stance the crates stretched or closed comes back to the clip's), on a foothold that prefers a
+// shorter step to a longer one, and owns the foot until it touches a top. Measurements: docs/decisions/footwork.md.
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <vector>
 
 #include "engine/anim/skeleton.h"
+#include "engine/control/biped/balance_step.h"
 #include "engine/control/biped/foot_geometry.h"
 #include "engine/control/biped/foothold.h"
 #include "engine/control/biped/ground.h"
@@ -23,6 +29,23 @@ struct StepTuning {
   double swing_press = 0.10;         // m, a stepping ankle aimed this far below the clip's: the sole shuffles along its top
   double step_up_tolerance = 0.01;   // m, a landing top higher than the start's by more is a step up (no press)
   FootholdParams foothold;           // the landing's search
+  // Carried steps (off: the shuffle above). A clip step travelling at least carry_min_travel swings on its own path,
+  // carry_lift over the highest top on its way and set down carry_press into its landing top; a swing that must rise
+  // takes at least (rise + lift) / carry_rise_speed (a shuffle's 0.13 s rose too late: the heel caught a higher
+  // crate's edge and the foot stalled); the landing relative to the stance foot unless that lands more than
+  // carry_max_extra farther than the clip's travel from the foot (the body has turned off the stance's heading).
+  bool carry = false;
+  double carry_min_travel = 0.04;   // m
+  double carry_lift = 0.04;         // m
+  double carry_press = 0.02;        // m
+  double carry_rise_speed = 0.6;    // m/s
+  double carry_max_extra = 0.12;    // m
+  double carry_late = 0.15;         // s, a carried swing not down this long after its duration is set down anyway
+  double carry_pass_clearance = 0.16;  // m, the path bent around the stance foot (balance_step.h)
+  // The carried landing's foothold: the balance steps' margins (a swing lands within a few cm, not exactly), and a
+  // shift away from the stance foot (a longer step) costs 4 times one toward it: a landing shifted 9-13 cm farther
+  // stretched the stance to 0.8 m and the next steps fell out of it.
+  FootholdParams carry_foothold = {.side_margin = 0.035, .back_cost = 4.0, .clearance = 0.05, .sole = {}};
 };
 
 // The clip's sole above its floor: the lower of the heel's and toe's heights (clip floor frame, z = 0 the floor).
@@ -35,6 +58,7 @@ struct Touchdown {
   double ahead = 0.0;
   Eigen::Vector2d travel = Eigen::Vector2d::Zero();
   double yaw = 0.0;
+  Eigen::Vector2d apart = Eigen::Vector2d::Zero();  // the landing ankle less the other ankle then (clip floor frame)
 };
 
 // preview(ahead, out): the clip's pose `ahead` seconds after now (clip floor frame). W, P: scratch.
@@ -51,15 +75,20 @@ struct StepPlan {
   Eigen::Vector3d target = Eigen::Vector3d::Zero();
   double clip_z = 0.0;
   bool step_up = false;  // the landing top is higher than the one the foot leaves (no shuffle, it lifts over)
-  bool has_velocity = false;  // a balance step (balance_step.h): the target's velocity, from its path (world, m/s)
+  bool has_velocity = false;  // a balance or carried step: the target's velocity, from its path (world, m/s)
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
+  bool carried = false;  // a carried step (StepTuning::carry): the target is path's, and the step owns the foot ...
+  bool landed = false;   // ... until it touches down; then the clip's swing is ignored until it ends
+  BalanceStep path;
 };
 
 // Starts a step: ankle_placed = the placed desired pose's ankle now (world), heading = the placement's heading (rad),
-// foot_centre_now = the physical foot's sole centre (world, where it steps from).
+// foot_centre_now = the physical foot's sole centre (world, where it steps from). A carried step also takes the
+// stance foot's ankle and sole centre (world x, y).
 void start_step(StepPlan& st, const Touchdown& td, const Eigen::Vector3d& ankle_placed, double heading,
                 const Eigen::Vector3d& foot_centre_now, GroundHeight ground, const FootGeometry& g,
-                const StepTuning& t, double dt);
+                const StepTuning& t, double dt, const Eigen::Vector2d& stance_ankle = Eigen::Vector2d::Zero(),
+                const Eigen::Vector2d& stance_centre = Eigen::Vector2d::Zero());
 
 // Advances a step by dt: the target from the placed desired ankle (world position and foot orientation).
 void advance_step(StepPlan& st, const Eigen::Vector3d& ankle_placed, const Eigen::Quaterniond& foot_placed,

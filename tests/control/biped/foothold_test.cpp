@@ -90,3 +90,28 @@ TEST(Foothold, TheClearanceKeepsALandingThatFarFromAHigherTopButNotFromALowerOne
   // On the high crate with the heel 2 cm out over the low one: still flat on the high one.
   EXPECT_TRUE(foothold_ok(a, V(0.06, 0.0), 0.0, clear));
 }
+
+// FootholdParams::back_cost (the carried steps' footholds): of two shifts that land a straddling sole flat, one along
+// frame_yaw and one against it, the one against costs back_cost times more. Symmetric (1), the nearer wins; with the
+// cost high enough the farther one along frame_yaw wins (a carried step lands short of the stance foot's side).
+TEST(Foothold, TheBackCostPrefersTheShiftAlongFrameYaw) {
+  const Boxes crates = two_crates();
+  const auto a = crates.ground();
+  const V ankle(-0.10, 0.0);  // straddling: 8 cm back (onto the low crate) or 11 cm forward (onto the high one)
+  ASSERT_FALSE(foothold_ok(a, ankle, 0.0));
+  eng::control::FootholdParams p;
+  const auto near = find_foothold(a, ankle, 0.0, 0.0, p);
+  ASSERT_TRUE(near.found);
+  EXPECT_NEAR(near.shift.x(), -0.08, 1e-9);
+  // Toward +X preferred: the backward 8 cm costs 4 x 0.0064 = 0.0256, the forward shift (0.11^2 = 0.0121) wins.
+  p.back_cost = 4.0;
+  const auto fwd = find_foothold(a, ankle, 0.0, 0.0, p);
+  ASSERT_TRUE(fwd.found);
+  EXPECT_TRUE(foothold_ok(a, ankle + fwd.shift, 0.0, p));
+  EXPECT_GT(fwd.shift.x(), 0.0);
+  EXPECT_LT(fwd.shift.squaredNorm(), p.back_cost * near.shift.squaredNorm());
+  // frame_yaw turned round (toward -X): the backward shift is along it again, and the cheapest.
+  const auto back = find_foothold(a, ankle, 0.0, M_PI, p);
+  ASSERT_TRUE(back.found);
+  EXPECT_NEAR(back.shift.x(), -0.08, 1e-9);
+}

@@ -107,3 +107,52 @@ TEST(StepPlanner, ALandingOnAHigherCrateIsAStepUpWithoutThePress) {
   EXPECT_EQ(st.shift, V2::Zero());
   EXPECT_TRUE(st.step_up);
 }
+
+// Carried steps (StepTuning::carry): the landing is where the clip has the foot relative to the stance foot at
+// touch-down, whatever the anchored placement says; the target follows its own path, with the path's velocity.
+TEST(StepPlanner, ACarriedStepLandsWhereTheClipHasItRelativeToTheStanceFoot) {
+  const control_test::Boxes floor;  // the floor at z = 0
+  const GroundHeight ground = floor.ground();
+  const FootGeometry g;
+  StepTuning t;
+  t.carry = true;
+  Touchdown td;
+  td.ahead = 0.15;
+  td.travel = V2(0.15, 0.0);   // clip frame: 15 cm forward ...
+  td.apart = V2(0.40, 0.25);   // ... to 40 cm ahead of and 25 cm left of the other ankle
+  const double heading = M_PI / 2;  // placed facing +Y: ahead is +Y, left is -X
+  const V2 stance_ankle(0.0, 0.0);
+  const V3 ankle_placed(-0.25, 0.20, 0.08);  // the anchored placement: 5 cm off the relative landing's start
+  const Eigen::Rotation2Dd yaw(heading);
+  const V3 from = V3(-0.25, 0.25, 0.0) + V3((yaw * g.centre.head<2>()).x(), (yaw * g.centre.head<2>()).y(), 0.0);
+  StepPlan st;
+  const double dt = 1.0 / 240;
+  start_step(st, td, ankle_placed, heading, from, ground, g, t, dt, stance_ankle, V2(yaw * g.centre.head<2>()));
+  ASSERT_TRUE(st.carried);
+  EXPECT_NEAR(st.landing.x(), -0.25, 1e-12);  // stance ankle + R(heading) (0.40, 0.25)
+  EXPECT_NEAR(st.landing.y(), 0.40, 1e-12);
+  EXPECT_EQ(st.shift, V2::Zero());  // flat floor: no foothold shift
+  EXPECT_NEAR((st.path.to - (st.landing + yaw * g.centre.head<2>())).norm(), 0.0, 1e-12);
+  EXPECT_DOUBLE_EQ(st.duration, std::max(0.15, t.carry_lift / t.carry_rise_speed));
+  // Mid-swing: the target's velocity is the target's rate (central difference over two ticks).
+  const Eigen::Quaterniond foot(Eigen::AngleAxisd(heading, V3::UnitZ()));
+  for (int i = 0; i < 16; ++i) advance_step(st, ankle_placed, foot, ground, g, t, dt);  // about 0.45 of the swing
+  const V3 before = st.target;
+  advance_step(st, ankle_placed, foot, ground, g, t, dt);
+  const V3 v = st.velocity;
+  advance_step(st, ankle_placed, foot, ground, g, t, dt);
+  ASSERT_TRUE(st.has_velocity);
+  EXPECT_NEAR((v - (st.target - before) / (2 * dt)).norm(), 0.0, 0.02 * v.norm() + 1e-3);
+  EXPECT_GT(v.head<2>().norm(), 0.5);  // it is moving (15 cm in 0.15 s)
+  // At the end: on the landing (the sole centre pressed carry_press into the floor).
+  for (int i = 0; i < 60; ++i) advance_step(st, ankle_placed, foot, ground, g, t, dt);
+  const V3 sole = st.target + foot * g.sole_offset();
+  EXPECT_NEAR((sole.head<2>() - st.path.to).norm(), 0.0, 1e-9);
+  EXPECT_NEAR(sole.z(), -t.carry_press, 1e-9);
+  // A landing that far from the foot (the body turned off the heading: more than carry_max_extra past the clip's
+  // travel) falls back to the placement's.
+  StepPlan turned;
+  start_step(turned, td, ankle_placed, heading, from, ground, g, t, dt, V2(-1.0, 0.0), V2(-1.0, 0.0));
+  EXPECT_NEAR(turned.landing.x(), ankle_placed.x(), 1e-12);
+  EXPECT_NEAR(turned.landing.y(), ankle_placed.y() + 0.15, 1e-12);
+}
