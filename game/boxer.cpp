@@ -211,6 +211,10 @@ void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const en
   const int n = skel.size();
   read_actual_state(d, b, n);
   laps.lap(&ControlStageTimes::pose);
+  // A carried step's foot in the air holds the walk in its clip (GraphWalker::hold_transitions).
+  if (eng::anim::GraphWalker* walker = b.source.walker())
+    walker->hold_transitions = (b.ctl.step[0].active && b.ctl.step[0].carried) ||
+                               (b.ctl.step[1].active && b.ctl.step[1].carried);
   b.source.tick(dt, Eigen::Rotation2Dd(-b.stance.heading) * b.ctl.anchor, &b.desired);
   laps.lap(&ControlStageTimes::graph);
   bool swing[2];          // the clip has this foot in the air (a step)

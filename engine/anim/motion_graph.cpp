@@ -339,9 +339,16 @@ void GraphWalker::decide() {
       if (!plan_target_.empty()) plan_to(plan_target_);
     }
   }
+  const int home = hold_transitions ? g_->clip_index(g_->content.home_clip) : -1;
   if (!plan_.empty()) {
     const Step s = plan_.front();
-    if (s.from_node == v) {
+    const GraphEdge* held = nullptr;  // the plan's next edge, when the hold keeps the walk from taking it
+    if (s.from_node == v && hold_transitions) {
+      const GraphEdge& e = es[s.edge];
+      if (e.kind != EdgeKind::Continuation || g_->nodes[e.to].clip != home) held = &e;
+    }
+    if (held && !at_end) return;  // the plan waits (made again once the walk is past it)
+    if (s.from_node == v && !held) {
       const GraphEdge& e = es[s.edge];
       if (e.kind == EdgeKind::Continuation ? at_end : !blend_.active) {
         plan_.erase(plan_.begin());
@@ -365,6 +372,15 @@ void GraphWalker::decide() {
         if (g_->nodes[e.to].clip == clip_) ++n_self;
       }
     if (n_cont == 0) return;  // cannot happen in a pruned graph
+    if (hold_transitions) {  // held: into the home clip when a continuation goes there
+      for (const GraphEdge& e : es)
+        if (e.kind == EdgeKind::Continuation && g_->nodes[e.to].clip == home) {
+          plan_.clear();
+          take_edge(v, e);
+          if (!plan_target_.empty()) plan_to(plan_target_);
+          return;
+        }
+    }
     const int n_other = n_cont - n_self;
     int pool = 0;  // 0: every continuation, 1: self, 2: other
     if (n_self > 0 && n_other > 0) pool = uniform() < loop_probability ? 1 : 2;
@@ -383,7 +399,7 @@ void GraphWalker::decide() {
     if (!plan_target_.empty()) plan_to(plan_target_);
     return;
   }
-  if (!plan_.empty() || blend_.active) return;
+  if (!plan_.empty() || blend_.active || hold_transitions) return;
   int n_tr = 0;
   for (const GraphEdge& e : es) n_tr += e.kind == EdgeKind::Transition;
   if (n_tr == 0) return;

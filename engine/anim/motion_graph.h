@@ -176,6 +176,11 @@ class GraphWalker {
   // turned about the root's floor position (the root does not jump). For clips authored facing one way (a boxer
   // toward its opponent) whose feet cannot follow a drifting heading.
   double heading_hold = 0.0;
+  // While set (the caller's, per tick), the walk stays in its clip: no random transition, no planned transition taken
+  // (a plan waits and is made again), and at the clip's end it continues into the home clip when it can. The game sets
+  // it while a carried step's foot is in the air (the balance QP's footwork, docs/decisions/footwork.md): a punch
+  // entered mid-swing left the foot hanging short of a higher crate.
+  bool hold_transitions = false;
 
  private:
   struct Blend {

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <queue>
 #include <random>
+#include <set>
 
 #include "anim/anim_test_util.h"
 #include "engine/anim/motion_graph.h"
@@ -426,4 +427,42 @@ TEST(GraphWalker, HeadingHoldKeepsTheWalkFacingItsStartWithTheSameClipsAndNoJump
   EXPECT_GT(worst_free, 20.0 * M_PI / 180.0);   // the free walk wanders (this seed: see the print)
   EXPECT_LT(worst_held, 0.5 * worst_free);
   EXPECT_LT(worst_root_step, 0.05);  // 3 m/s at 60 Hz: no jump (a step's root moves ~1 m/s)
+}
+
+// GraphWalker::hold_transitions (the game's, while a carried step's foot is in the air): a held walk draws no random
+// transition and takes no planned one (the plan waits, and is taken once the hold is off); at a clip's end it goes on
+// into the home clip. The same seed without the hold leaves its clip.
+TEST(GraphWalker, AHeldWalkStaysInItsClipAndTakesItsPlanOnceLetGo) {
+  const MotionGraph& g = graph();
+  auto clips_visited = [&](bool hold) {
+    GraphWalker w(g, 5, "guard");
+    w.transition_probability = 0.5;  // a transition drawn on almost every frame ...
+    w.loop_probability = 1.0;        // ... and guard loops back into itself at its end
+    w.hold_transitions = hold;
+    std::set<std::string> seen;
+    for (int i = 0; i < 30 * 10; ++i) {
+      w.tick(1.0 / 30);
+      seen.insert(w.current_clip());
+    }
+    return seen;
+  };
+  EXPECT_EQ(clips_visited(true), std::set<std::string>{"guard"});
+  EXPECT_GT(clips_visited(false).size(), 1u);
+  // A requested punch waits while held, then is thrown.
+  GraphWalker w(g, 9, "guard");
+  w.transition_probability = 0.0;
+  w.loop_probability = 1.0;
+  ASSERT_TRUE(w.request_clip("jab"));
+  w.hold_transitions = true;
+  for (int i = 0; i < 30 * 3; ++i) {
+    w.tick(1.0 / 30);
+    ASSERT_EQ(w.current_clip(), "guard") << "tick " << i;
+  }
+  w.hold_transitions = false;
+  bool jabbed = false;
+  for (int i = 0; i < 30 * 3 && !jabbed; ++i) {
+    w.tick(1.0 / 30);
+    jabbed = w.current_clip() == "jab";
+  }
+  EXPECT_TRUE(jabbed);
 }
