@@ -172,8 +172,8 @@ TEST(GraphWalk, TheWalkStandsOnTheRootAssistWithinItsLimit) {
 TEST(GraphWalk, CarriedFootworkMovesTheFeetWhereTheShuffleDragsThem) {
   // --footwork carry (step_planner.h): the clips' steps swing on their own path to where the clip puts the foot
   // relative to the stance foot. Walk seed 10, 20 s: the shuffle's pressed soles cover 26% of the clips' travel,
-  // the carried steps 73% (more than the clip's own on some steps: a foothold on the next crate, or the stance
-  // restored to the clip's), and the walk stands on an assist rms of 34 N m (29 shuffling).
+  // the carried steps 65% (more than the clip's own on some steps: a foothold on the next crate, or the stance
+  // restored to the clip's), and the walk stands on an assist rms of 32 N m (29 shuffling).
   const auto shuffle = run({"--scenario", "graph-walk", "--seed", "10"}, 20.0);
   const auto carried = run({"--scenario", "graph-walk", "--seed", "10", "--footwork", "carry"}, 20.0);
   EXPECT_FALSE(carried.fell) << "fell at " << carried.fell_at << " s (" << carried.fell_reason << ")";
