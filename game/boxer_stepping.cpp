@@ -63,6 +63,12 @@ eng::control::Touchdown touchdown_of(const eng::anim::Skeleton& skel, Boxer& b, 
   return td;
 }
 
+// Foot k's sole centre where the physical foot is (world).
+Eigen::Vector3d sole_centre(const eng::physics::Data& d, const Boxer& b, int k) {
+  const int fb = b.bodies.body[b.bones.foot[k]];
+  return d.x[fb].p + d.x[fb].R * b.settings.tuning.foot.centre;
+}
+
 }  // namespace
 
 // LIFT-OFF GATING (balance QP, lift_off_gate.h): the capture point over the other foot's touching contacts decides
@@ -100,9 +106,8 @@ void gate_lift_off(const eng::physics::Model& m, const eng::physics::Data& d, co
         b.ctl.gate[k], swing[k], stance, xi, td.ahead, dt, b.settings.tuning.gate, b.scratch.hull, step, &b.scratch.pts);
     if (e == eng::control::GateEvent::StepTaken) {
       ++b.metrics.steps_taken;
-      const int fb = b.bodies.body[b.bones.foot[k]];
       b.metrics.step_travel[k] = Eigen::Rotation2Dd(b.stance.heading) * td.travel;
-      b.metrics.step_from[k] = (d.x[fb].p + d.x[fb].R * b.settings.tuning.foot.centre).head<2>();
+      b.metrics.step_from[k] = sole_centre(d, b, k).head<2>();
       b.metrics.step_pending[k] = b.metrics.step_travel[k].norm() > BoxerMetrics::kStepTravelMin;
     }
     if (e == eng::control::GateEvent::StepSkipped) ++b.metrics.steps_skipped;
@@ -127,8 +132,7 @@ void plan_steps(const eng::physics::Data& d, const eng::assets::CharacterDesc& d
       // A carried step swings until its sole touches a top past the swing's middle and within a few cm of its landing
       // (a toe brushing the crate it left is not a landing), or late: it then rests until the clip's swing ends (the
       // clip may land the foot sooner or later than the path).
-      const int fb = b.bodies.body[feet[k]];
-      const Eigen::Vector2d sole = (d.x[fb].p + d.x[fb].R * g.centre).head<2>();
+      const Eigen::Vector2d sole = sole_centre(d, b, k).head<2>();
       const bool down = b.ctl.contacts.on_top[k] && st.elapsed > 0.6 * st.duration && (sole - st.path.to).norm() < 0.06;
       if (down || st.elapsed > st.duration + b.settings.tuning.step.carry_late || b.ctl.state.fallen())
         st.active = false, st.landed = true;
@@ -150,11 +154,10 @@ void plan_steps(const eng::physics::Data& d, const eng::assets::CharacterDesc& d
     if (!swing[k]) continue;
     eng::control::StepPlan& st = b.ctl.step[k];
     if (starts[k]) {
-      const int fb = b.bodies.body[feet[k]], ob = b.bodies.body[feet[1 - k]];
-      const Eigen::Vector3d from = d.x[fb].p + d.x[fb].R * g.centre;
-      const Eigen::Vector3d stance = d.x[ob].p + d.x[ob].R * g.centre;
+      const Eigen::Vector3d from = sole_centre(d, b, k), stance = sole_centre(d, b, 1 - k);
+      const Eigen::Vector2d stance_ankle = d.x[b.bodies.body[feet[1 - k]]].p.head<2>();
       eng::control::start_step(st, td[k], P[feet[k]], b.stance.heading, from, ground, g, b.settings.tuning.step, dt,
-                               d.x[ob].p.head<2>(), stance.head<2>());
+                               stance_ankle, stance.head<2>());
     }
     eng::control::advance_step(st, P[feet[k]], W[feet[k]], ground, g, b.settings.tuning.step, dt);
   }
@@ -212,7 +215,7 @@ void take_balance_steps(const eng::physics::Model& m, const eng::physics::Data& 
   const eng::control::SoleShape& shape = b.settings.tuning.step.foothold.sole;
   for (int k = 0; k < 2; ++k) {
     const int fb = b.bodies.body[feet[k]];
-    sole[k] = (d.x[fb].p + d.x[fb].R * g.centre).head<2>();
+    sole[k] = sole_centre(d, b, k).head<2>();
     yaw[k] = eng::control::heading_of(Eigen::Quaterniond(d.x[fb].R));
     corners[k].clear();
     if (!b.ctl.contacts.on_ground[k]) continue;

@@ -286,7 +286,7 @@ void MotionGraph::build(const std::vector<Clip>& cl, const GraphOptions& opt, co
 
 // ------------------------------------------------------------------------------------------ walker
 GraphWalker::GraphWalker(const MotionGraph& g, uint64_t seed, const std::string& start_clip)
-    : g_(&g), rng_(seed) {
+    : g_(&g), rng_(seed), home_(g.clip_index(g.content.home_clip)) {
   clip_ = std::max(0, g.clip_index(start_clip.empty() ? g.content.home_clip : start_clip));
 }
 
@@ -339,13 +339,12 @@ void GraphWalker::decide() {
       if (!plan_target_.empty()) plan_to(plan_target_);
     }
   }
-  const int home = hold_transitions ? g_->clip_index(g_->content.home_clip) : -1;
   if (!plan_.empty()) {
     const Step s = plan_.front();
     const GraphEdge* held = nullptr;  // the plan's next edge, when the hold keeps the walk from taking it
     if (s.from_node == v && hold_transitions) {
       const GraphEdge& e = es[s.edge];
-      if (e.kind != EdgeKind::Continuation || g_->nodes[e.to].clip != home) held = &e;
+      if (e.kind != EdgeKind::Continuation || g_->nodes[e.to].clip != home_) held = &e;
     }
     if (held && !at_end) return;  // the plan waits (made again once the walk is past it)
     if (s.from_node == v && !held) {
@@ -374,7 +373,7 @@ void GraphWalker::decide() {
     if (n_cont == 0) return;  // cannot happen in a pruned graph
     if (hold_transitions) {  // held: into the home clip when a continuation goes there
       for (const GraphEdge& e : es)
-        if (e.kind == EdgeKind::Continuation && g_->nodes[e.to].clip == home) {
+        if (e.kind == EdgeKind::Continuation && g_->nodes[e.to].clip == home_) {
           plan_.clear();
           take_edge(v, e);
           if (!plan_target_.empty()) plan_to(plan_target_);

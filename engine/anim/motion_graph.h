@@ -203,6 +203,7 @@ class GraphWalker {
 
   const MotionGraph* g_;
   std::mt19937_64 rng_;
+  int home_ = -1;  // the home clip's index (hold_transitions' continuation)
   int clip_ = 0;
   int frame_ = 0;
   double time_ = 0.0;

@@ -40,7 +40,6 @@ void start_step(StepPlan& st, const Touchdown& td, const Eigen::Vector3d& ankle_
   st.shift = find_foothold(ground, st.landing, yaw, std::atan2(toward.y(), toward.x()), t.carry_foothold).shift;
   start_balance_step(st.path, 0, false, from.head<2>(), st.landing + st.shift + centre, stance_centre,
                      t.carry_pass_clearance, yaw, st.duration, ground, g, t.carry_foothold);
-  st.path.asked = st.landing + centre;
   const double rise = st.path.path_top + t.carry_lift - st.path.from_top;
   st.duration = st.path.duration = std::max(st.duration, rise / t.carry_rise_speed);
   st.step_up = st.path.to_top > st.path.from_top + t.step_up_tolerance;
@@ -49,6 +48,17 @@ void start_step(StepPlan& st, const Touchdown& td, const Eigen::Vector3d& ankle_
 void advance_step(StepPlan& st, const Eigen::Vector3d& ankle_placed, const Eigen::Quaterniond& foot_placed,
                   GroundHeight ground, const FootGeometry& g, const StepTuning& t, double dt) {
   st.elapsed += dt;
+  if (st.carried) {  // the sole centre on its path, and the path's velocity as the swing's feed-forward
+    st.path.elapsed = st.elapsed;
+    BalanceStepTuning swing;
+    swing.lift = t.carry_lift;
+    swing.press = t.carry_press;
+    const Eigen::Vector3d c = balance_step_sole_target(st.path, swing, &st.velocity);
+    st.target = c - Eigen::AngleAxisd(st.path.yaw, Eigen::Vector3d::UnitZ()) * g.sole_offset();
+    st.clip_z = st.target.z();
+    st.has_velocity = true;
+    return;
+  }
   const double u = std::clamp(st.elapsed / st.duration, 0.0, 1.0);
   const Eigen::Vector2d s = (3.0 * u * u - 2.0 * u * u * u) * st.shift;
   const Eigen::Vector3d mid = ankle_placed + foot_placed * g.centre;
@@ -58,16 +68,6 @@ void advance_step(StepPlan& st, const Eigen::Vector3d& ankle_placed, const Eigen
   // The shuffle: the sole stays pressed to its top, except up onto a higher one (it has to clear the edge).
   const double press = st.step_up ? 0.0 : t.swing_press;
   st.target = Eigen::Vector3d(ankle_placed.x() + s.x(), ankle_placed.y() + s.y(), st.clip_z + top - press);
-  if (!st.carried) return;
-  // Carried: the sole centre on its path, and the path's velocity as the swing's feed-forward.
-  st.path.elapsed = st.elapsed;
-  BalanceStepTuning swing;
-  swing.lift = t.carry_lift;
-  swing.press = t.carry_press;
-  const Eigen::Vector3d c = balance_step_sole_target(st.path, swing, &st.velocity);
-  st.target = c - Eigen::AngleAxisd(st.path.yaw, Eigen::Vector3d::UnitZ()) * g.sole_offset();
-  st.clip_z = st.target.z();
-  st.has_velocity = true;
 }
 
 }  // namespace eng::control
