@@ -79,8 +79,11 @@ void gate_lift_off(const eng::physics::Model& m, const eng::physics::Data& d, co
   const int pelvis = b.bodies.body[0];
   for (int k = 0; k < 2; ++k) {
     if (!eng::control::lift_off_gate_due(b.ctl.gate[k], swing[k], !b.ctl.state.fallen())) continue;
-    // The other (stance) foot's ground contacts and the capture point.
-    const std::vector<Eigen::Vector2d>& stance = b.ctl.contacts.ground_points[1 - k];
+    // The other (stance) foot's ground contacts and the capture point. None while that foot is in a carried step
+    // (still touching as it lifts, it had let this foot go too: both feet swinging, carried walk seed 24).
+    const eng::control::StepPlan& other = b.ctl.step[1 - k];
+    const std::vector<Eigen::Vector2d>& stance =
+        other.active && other.carried ? b.scratch.no_points : b.ctl.contacts.ground_points[1 - k];
     Eigen::Vector2d xi = Eigen::Vector2d::Zero();
     eng::control::ClipStep step;
     const eng::control::Touchdown td = touchdown_of(skel, b, k);
@@ -330,6 +333,7 @@ void take_balance_steps(const eng::physics::Model& m, const eng::physics::Data& 
   const Eigen::Quaterniond R(Eigen::AngleAxisd(s.yaw, Eigen::Vector3d::UnitZ()));
   eng::control::StepPlan& plan = b.ctl.step[k];
   plan.active = true;
+  plan.carried = plan.landed = false;  // a carried step it interrupts is over
   plan.target = target - R * g.sole_offset();
   plan.clip_z = plan.target.z();
   plan.has_velocity = true;

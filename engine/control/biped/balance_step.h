@@ -100,6 +100,10 @@ struct BalanceStep {
   double yaw = 0.0;          // the foot's heading (kept as it lifted)
   double from_top = 0.0, to_top = 0.0, path_top = 0.0;  // crate tops: where it lifts, where it lands, highest between
   double duration = 0.0, elapsed = 0.0;
+  // The swing's timing, in fractions of its duration: the sole reaches its clearance at rise_until (<= 0.5) and moves
+  // along the path from travel_from to 0.85. A balance step's are 0.3 and 0.1; a carried step up past a higher top's
+  // edge rises before it travels (step_planner.cpp).
+  double rise_until = 0.3, travel_from = 0.1;
   Eigen::Vector2d asked = Eigen::Vector2d::Zero();  // the landing as planned before the foothold's shift
 };
 

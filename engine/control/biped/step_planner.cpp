@@ -40,8 +40,20 @@ void start_step(StepPlan& st, const Touchdown& td, const Eigen::Vector3d& ankle_
   st.shift = find_foothold(ground, st.landing, yaw, std::atan2(toward.y(), toward.x()), t.carry_foothold).shift;
   start_balance_step(st.path, 0, false, from.head<2>(), st.landing + st.shift + centre, stance_centre,
                      t.carry_pass_clearance, yaw, st.duration, ground, g, t.carry_foothold);
-  const double rise = st.path.path_top + t.carry_lift - st.path.from_top;
-  st.duration = st.path.duration = std::max(st.duration, rise / t.carry_rise_speed);
+  const double rise = st.path.path_top + t.carry_lift - st.path.from_top, rise_time = rise / t.carry_rise_speed;
+  st.duration = std::max(st.duration, rise_time);
+  if (st.path.path_top > st.path.from_top + t.step_up_tolerance) {
+    // Past a higher top's edge: the sole rises at carry_rise_speed and travels only once it is carry_edge_clearance
+    // above that top (the smoothstep rise's inverse, v = 1/2 - sin(asin(1 - 2 f) / 3)), then in the clip's time.
+    // Travelling from the swing's start, a heel 1 cm from a higher crate's side caught on its edge, the foot pivoted
+    // on it and the body fell over the stance foot (carried walks, seeds 3 and 11).
+    const double f = std::clamp((st.path.path_top + t.carry_edge_clearance - st.path.from_top) / rise, 0.0, 1.0);
+    const double v = 0.5 - std::sin(std::asin(1.0 - 2.0 * f) / 3.0);
+    st.duration = std::max({st.duration, rise_time / 0.5, (v * rise_time + 0.75 * td.ahead) / 0.85});
+    st.path.rise_until = rise_time / st.duration;
+    st.path.travel_from = v * rise_time / st.duration;
+  }
+  st.path.duration = st.duration;
   st.step_up = st.path.to_top > st.path.from_top + t.step_up_tolerance;
 }
 

@@ -32,7 +32,8 @@ struct StepTuning {
   // Carried steps (off: the shuffle above). A clip step travelling at least carry_min_travel swings on its own path,
   // carry_lift over the highest top on its way and set down carry_press into its landing top; a swing that must rise
   // takes at least (rise + lift) / carry_rise_speed (a shuffle's 0.13 s rose too late: the heel caught a higher
-  // crate's edge and the foot stalled); the landing relative to the stance foot unless that lands more than
+  // crate's edge and the foot stalled), and past a higher top's edge it rises at that speed and travels once
+  // carry_edge_clearance above the top; the landing relative to the stance foot unless that lands more than
   // carry_max_extra farther than the clip's travel from the foot (the body has turned off the stance's heading).
   bool carry = false;
   double carry_min_travel = 0.04;   // m
@@ -40,6 +41,7 @@ struct StepTuning {
   double carry_press = 0.02;        // m
   double carry_rise_speed = 0.6;    // m/s
   double carry_max_extra = 0.12;    // m
+  double carry_edge_clearance = 0.02;  // m, a sole rising past a higher top travels once this far above it
   double carry_late = 0.15;         // s, a carried swing not down this long after its duration is set down anyway
   double carry_pass_clearance = 0.16;  // m, the path bent around the stance foot (balance_step.h)
   // The carried landing's foothold: the balance steps' margins (a swing lands within a few cm, not exactly), and a

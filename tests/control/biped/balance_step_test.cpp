@@ -7,6 +7,7 @@
 
 #include <cmath>
 
+#include "control/biped/boxes.h"
 #include "engine/control/biped/support_polygon.h"
 
 namespace {
@@ -178,6 +179,21 @@ TEST(StartBalanceStep, ThePathsTopCountsACrateBesideThePathUnderTheSolesEdge) {
   eng::control::start_balance_step(s, 0, false, Vector2d(0.0, 0.0), Vector2d(0.5, 0.0), Vector2d(0.0, -0.3), 0.0,
                                    0.0, 0.3, eng::control::GroundHeight::of(far), g, t.foothold);
   EXPECT_NEAR(s.path_top, 0.28, 1e-12);
+}
+
+TEST(StartBalanceStep, AFootAcrossASeamLiftsFromTheTopItStandsOn) {
+  // The sole centre over the 1.2 cm seam between two crates (the terrain reads the floor there): the swing starts
+  // from the higher top under the sole, not from the floor (read at the centre alone, a carried step rose 0.4 m).
+  const control_test::Boxes crates = control_test::two_crates();
+  eng::control::BalanceStep s;
+  eng::control::FootGeometry g;
+  BalanceStepTuning t;
+  ASSERT_DOUBLE_EQ(crates(0.0, 0.0), 0.0);
+  eng::control::start_balance_step(s, 0, false, Vector2d(0.0, 0.0), Vector2d(-0.3, 0.0), Vector2d(0.0, -0.3), 0.0,
+                                   0.0, 0.3, crates.ground(), g, t.foothold);
+  EXPECT_NEAR(s.from_top, 0.40, 1e-12);
+  s.elapsed = 0.0;
+  EXPECT_NEAR(eng::control::balance_step_sole_target(s, t).z(), 0.40, 1e-12);
 }
 
 TEST(BalanceStepSoleTarget, VelocityIsThePathsDerivative) {

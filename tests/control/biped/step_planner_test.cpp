@@ -156,3 +156,49 @@ TEST(StepPlanner, ACarriedStepLandsWhereTheClipHasItRelativeToTheStanceFoot) {
   EXPECT_NEAR(turned.landing.x(), ankle_placed.x(), 1e-12);
   EXPECT_NEAR(turned.landing.y(), ankle_placed.y() + 0.15, 1e-12);
 }
+
+TEST(StepPlanner, ACarriedStepUpPastAHigherEdgeRisesAboveItBeforeItTravels) {
+  // Stepping back (-X) from the low crate's twin at x > 0 (top 0.30) onto a higher one at x < 0 (top 0.40): the sole
+  // centre starts 12 cm from the higher crate's side, its heel 1 cm off it (carried walk seed 3: the heel caught the
+  // edge as the target travelled from the start). The target may not come nearer the side until the sole is
+  // carry_edge_clearance above the higher top, and the rise keeps to carry_rise_speed.
+  control_test::Boxes crates;
+  crates.boxes.push_back({{0.25, 0.0, 0.15}, {0.244, 0.244, 0.15}});
+  crates.boxes.push_back({{-0.25, 0.0, 0.20}, {0.244, 0.244, 0.20}});
+  const GroundHeight ground = crates.ground();
+  const FootGeometry g;
+  StepTuning t;
+  t.carry = true;
+  Touchdown td;
+  td.ahead = 0.15;
+  td.travel = V2(-0.22, 0.0);
+  td.apart = V2(0.25, 0.0);  // lands 25 cm ahead of the stance ankle
+  const V2 stance_ankle(-0.40, -0.25);
+  const V3 from(0.126, 0.0, 0.30);  // sole centre
+  const V2 stance_centre = stance_ankle + g.centre.head<2>();
+  StepPlan st;
+  const double dt = 1.0 / 240;
+  start_step(st, td, V3(0.126 - g.centre.x(), 0.0, 0.38), 0.0, from, ground, g, t, dt, stance_ankle, stance_centre);
+  ASSERT_TRUE(st.carried);
+  ASSERT_NEAR(st.path.from_top, 0.30, 1e-12);
+  ASSERT_NEAR(st.path.to_top, 0.40, 1e-12);
+  const double rise = 0.40 + t.carry_lift - 0.30;
+  EXPECT_GE(st.duration, rise / t.carry_rise_speed / 0.5 - 1e-12) << "the rise, at most half the swing";
+  EXPECT_NEAR(st.path.rise_until * st.duration, rise / t.carry_rise_speed, 1e-12);
+  const Eigen::Quaterniond foot = Eigen::Quaterniond::Identity();
+  double peak_rate = 0.0, prev_z = -1.0;
+  for (int i = 0; st.elapsed < st.duration; ++i) {
+    advance_step(st, V3::Zero(), foot, ground, g, t, dt);
+    const V3 sole = st.target + foot * g.sole_offset();
+    const bool below = sole.z() < 0.40 + t.carry_edge_clearance - 1e-9;
+    if (below && st.elapsed < 0.5 * st.duration) {
+      EXPECT_NEAR(sole.x(), from.x(), 1e-9) << "travels while still below the higher top, at t = " << st.elapsed;
+    }
+    if (prev_z >= 0.0 && st.elapsed < 0.5 * st.duration) peak_rate = std::max(peak_rate, (sole.z() - prev_z) / dt);
+    prev_z = sole.z();
+  }
+  EXPECT_LE(peak_rate, 1.5 * t.carry_rise_speed + 1e-6);  // smoothstep's peak rate is 1.5 times its mean
+  const V3 end = st.target + foot * g.sole_offset();
+  EXPECT_NEAR(end.x(), st.path.to.x(), 1e-9);
+  EXPECT_NEAR(end.z(), 0.40 - t.carry_press, 1e-9);
+}
