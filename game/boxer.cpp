@@ -223,7 +223,7 @@ void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const en
   laps.lap(&ControlStageTimes::pose);
   const bool steps = plans_steps(b);
   if (steps && d.time > 0.0) update_support_base(d, arena, b, dt);
-  if (steps && d.time > 0.0) gate_lift_off(m, d, desc, b, swing, dt);
+  if (steps && d.time > 0.0) gate_lift_off(m, d, desc, arena, b, swing, dt);
   laps.lap(&ControlStageTimes::stepping);
   place_desired_pose(desc, arena, b, b.desired);
   if (b.ctl.state.state == BoxerState::GettingUp) {

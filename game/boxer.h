@@ -141,6 +141,7 @@ struct BoxerScratch {
   std::vector<Eigen::Vector3d> omega_a;  // actual world angular velocity per bone
   std::vector<Eigen::Vector3d> q_joint, spring_ref;  // implicit servo: joint rotations, spring references
   std::vector<Eigen::Vector2d> hull, pts, landing;  // lift-off gate (landing: a quick step's sole), balance steps
+  eng::control::StepPlan step_preview;  // lift-off gate: a carried step as it would start
   static inline const std::vector<Eigen::Vector2d> no_points;  // an empty contact set (a stance foot that is stepping itself)
   // balance steps: the soles on the ground (corners, hulls), the stance's hull
   std::vector<Eigen::Vector2d> sole_corners[2], sole_hull[2], stance_hull;

@@ -74,7 +74,7 @@ Eigen::Vector3d sole_centre(const eng::physics::Data& d, const Boxer& b, int k) 
 // LIFT-OFF GATING (balance QP, lift_off_gate.h): the capture point over the other foot's touching contacts decides
 // whether a foot the clip lifts may leave the ground. Measurements: docs/decisions/lift-off-gate.md.
 void gate_lift_off(const eng::physics::Model& m, const eng::physics::Data& d, const eng::assets::CharacterDesc& desc,
-                   Boxer& b, bool swing[2], double dt) {
+                   const Arena& arena, Boxer& b, bool swing[2], double dt) {
   const auto& skel = desc.skeleton;
   const int pelvis = b.bodies.body[0];
   for (int k = 0; k < 2; ++k) {
@@ -97,7 +97,22 @@ void gate_lift_off(const eng::physics::Model& m, const eng::physics::Data& d, co
       // heading (the sole's rectangle; plan_steps may still shift it onto a better foothold).
       const int fb = b.bodies.body[b.bones.foot[k]];
       const Eigen::Rotation2Dd heading(b.stance.heading), yaw(b.stance.heading + td.yaw);
-      const Eigen::Vector2d ankle = d.x[fb].p.head<2>() + heading * td.travel;
+      Eigen::Vector2d ankle = d.x[fb].p.head<2>() + heading * td.travel;
+      // A carried step is judged as plan_steps would start it: its landing (the foothold's) and its swing's length
+      // (a step up rises at carry_rise_speed). Judged by the clip's 0.13 s, a stunned boxer lifted its rear foot for
+      // a 0.79 s step up a crate 25 cm from its com and fell over the stance foot (carried match seed 5).
+      eng::control::StepPlan& preview = b.scratch.step_preview;
+      preview.carried = false;
+      if (b.settings.tuning.step.carry) {
+        const Eigen::Vector3d from = sole_centre(d, b, k), stance_centre = sole_centre(d, b, 1 - k);
+        eng::control::start_step(preview, td, d.x[fb].p, b.stance.heading, from, ground_of(arena),
+                                 b.settings.tuning.foot, b.settings.tuning.step, dt,
+                                 d.x[b.bodies.body[b.bones.foot[1 - k]]].p.head<2>(), stance_centre.head<2>());
+      }
+      if (preview.carried) {
+        ankle = preview.landing + preview.shift;
+        step.swing = preview.duration;
+      }
       const eng::control::SoleShape& sole = b.settings.tuning.step.foothold.sole;
       b.scratch.landing.clear();
       for (double x : {sole.heel, sole.toe})

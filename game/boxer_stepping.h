@@ -14,7 +14,7 @@ struct Boxer;
 void update_support_base(const eng::physics::Data& d, const Arena& arena, Boxer& b, double dt);
 // Lift-off gating (lift_off_gate.h): clears swing[k] for a foot held down; counts steps taken / skipped.
 void gate_lift_off(const eng::physics::Model& m, const eng::physics::Data& d, const eng::assets::CharacterDesc& desc,
-                   Boxer& b, bool swing[2], double dt);
+                   const Arena& arena, Boxer& b, bool swing[2], double dt);
 // The step planner (step_planner.h) on the placed desired pose: b.ctl.step. A carried step (StepTuning::carry) keeps
 // its foot swinging (swing[k] true) until it touches down, and down (false) until the clip's own swing ends.
 void plan_steps(const eng::physics::Data& d, const eng::assets::CharacterDesc& desc, const Arena& arena, Boxer& b,

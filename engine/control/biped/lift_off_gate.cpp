@@ -21,6 +21,7 @@ bool lift_off_gate_due(LiftGate& g, bool& swing, bool active) {
 bool quick_step_capturable(const std::vector<Eigen::Vector2d>& stance_hull, const Eigen::Vector2d& xi,
                            double swing_left, const ClipStep& step, const LiftOffGateTuning& t,
                            std::vector<Eigen::Vector2d>& pts, std::vector<Eigen::Vector2d>& hull) {
+  if (step.swing > 0.0) swing_left = step.swing;
   if (!t.quick || !step.landing || step.landing->empty() || stance_hull.empty() || swing_left > t.quick_max_swing)
     return false;
   const Eigen::Vector2d p = clamp_to_polygon(stance_hull, xi, 0.0);

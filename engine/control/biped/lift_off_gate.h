@@ -29,11 +29,12 @@ struct LiftOffGateTuning {
   double quick_max_swing = 0.3;   // s, a longer swing is not a quick step (xi(T) grows as e^(omega T))
 };
 
-// The clip's step, for the quick-step test: the landing sole's corners (floor x, y; empty: no quick step) and the
-// LIP's omega0 = sqrt(g / z).
+// The clip's step, for the quick-step test: the landing sole's corners (floor x, y; empty: no quick step), the
+// LIP's omega0 = sqrt(g / z) and, for a step that swings longer than the clip's (a carried step), its length.
 struct ClipStep {
   const std::vector<Eigen::Vector2d>* landing = nullptr;
   double omega = 0.0;
+  double swing = 0.0;  // s, the swing's own length when the step is not the clip's (a carried step); 0: the clip's
 };
 
 struct LiftGate {
@@ -60,7 +61,8 @@ GateEvent lift_off_gate_decide(LiftGate& g, bool& swing, const std::vector<Eigen
                                std::vector<Eigen::Vector2d>& hull, const ClipStep& step = {},
                                std::vector<Eigen::Vector2d>* pts = nullptr);
 
-// The quick-step test alone: xi at the touch-down (swing_left from now) inside the stance + landing hull. hull: the
+// The quick-step test alone: xi at the touch-down (swing_left from now, or step.swing when set) inside the stance +
+// landing hull. hull: the
 // stance + landing hull out (may be stance_hull itself: read first); pts: scratch.
 bool quick_step_capturable(const std::vector<Eigen::Vector2d>& stance_hull, const Eigen::Vector2d& xi,
                            double swing_left, const ClipStep& step, const LiftOffGateTuning& t,

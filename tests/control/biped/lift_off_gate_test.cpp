@@ -186,3 +186,25 @@ TEST(LiftOffGate, AQuickStepsSwingTimeDecidesHowFarTheCapturePointRunsBeforeTheF
   EXPECT_TRUE(quick_step_capturable(stance_hull, V(0.13, 0.12), 0.15, {&beside, 3.5}, t, pts, hull));   // y(T) 0.17
   EXPECT_FALSE(quick_step_capturable(stance_hull, V(0.13, 0.20), 0.15, {&beside, 3.5}, t, pts, hull));  // y(T) 0.30
 }
+
+TEST(LiftOffGate, ACarriedStepIsJudgedByItsOwnSwingNotTheClips) {
+  // The clip lands the foot in 0.15 s, capturable (xi(T) = 0.497, landing toe at 0.56 m); carried up a crate the
+  // swing takes 0.28 s and the capture point runs to 0.633, past the landing: held down for the weight shift.
+  LiftOffGateTuning t;
+  std::vector<V> hull, pts, stance_hull;
+  convex_hull_2d(stance_sole(), stance_hull);
+  const std::vector<V> landing = sole_at(0.30);
+  EXPECT_TRUE(quick_step_capturable(stance_hull, V(0.40, 0.0), 0.15, {&landing, 3.5, 0.0}, t, pts, hull));
+  EXPECT_FALSE(quick_step_capturable(stance_hull, V(0.40, 0.0), 0.15, {&landing, 3.5, 0.28}, t, pts, hull));
+  LiftGate g;
+  bool swing = true;
+  EXPECT_EQ(lift_off_gate_decide(g, swing, stance_sole(), V(0.40, 0.0), 0.15, 0.01, t, hull, {&landing, 3.5, 0.28}, &pts),
+            GateEvent::None);
+  EXPECT_TRUE(g.holding);
+  // Its swing does not excuse a late opening: the clip's touch-down nearer than min_swing still skips it.
+  LiftGate late;
+  bool swing2 = true;
+  EXPECT_EQ(lift_off_gate_decide(late, swing2, stance_sole(), V(0.05, 0.0), 0.5 * t.min_swing, 0.01, t, hull,
+                                 {&landing, 3.5, 0.28}, &pts),
+            GateEvent::StepSkipped);
+}
