@@ -79,11 +79,13 @@ void gate_lift_off(const eng::physics::Model& m, const eng::physics::Data& d, co
   const int pelvis = b.bodies.body[0];
   for (int k = 0; k < 2; ++k) {
     if (!eng::control::lift_off_gate_due(b.ctl.gate[k], swing[k], !b.ctl.state.fallen())) continue;
-    // The other (stance) foot's ground contacts and the capture point. None while that foot is in a carried step
-    // (still touching as it lifts, it had let this foot go too: both feet swinging, carried walk seed 24).
+    // The other (stance) foot's ground contacts and the capture point. Carried footwork counts none while that foot
+    // is in a carried step (still touching as it lifts, it had let this foot go too: both feet swinging, carried
+    // walk seed 24) or touches no top (a foot left on a crate's edge by a late landing held a stunned boxer on one
+    // leg as it fell, carried match seed 12).
     const eng::control::StepPlan& other = b.ctl.step[1 - k];
-    const std::vector<Eigen::Vector2d>& stance =
-        other.active && other.carried ? b.scratch.no_points : b.ctl.contacts.ground_points[1 - k];
+    const bool no_stance = b.settings.tuning.step.carry && ((other.active && other.carried) || !b.ctl.contacts.on_top[1 - k]);
+    const std::vector<Eigen::Vector2d>& stance = no_stance ? b.scratch.no_points : b.ctl.contacts.ground_points[1 - k];
     Eigen::Vector2d xi = Eigen::Vector2d::Zero();
     eng::control::ClipStep step;
     const eng::control::Touchdown td = touchdown_of(skel, b, k);
