@@ -99,8 +99,8 @@ flags:
                          where a balance step lands: past the capture point (default) or where Kwon & Hodgins'
                          cart-pole LQR comes to rest
   --footwork shuffle|carry
-                         balance QP: the clips' steps shuffle, the sole pressed along its crate (default), or are
-                         carried to where the clip puts the foot (experimental: the boxers really move, and fall more)
+                         balance QP: the clips' steps are carried to where the clip puts the foot (default: the
+                         boxers really move), or shuffle, the sole pressed along its crate (the feet barely move)
   --flat                 a level platform (every crate 0.30 m) instead of the uneven crates
   --priorities kudoh|off|auto
                          balance QP: Kudoh's priorities in guard (the trunk's posture over the com's place, the

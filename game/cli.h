@@ -58,7 +58,7 @@ struct Options {
   std::string stepping = "auto";      // --stepping on|off|auto: the balance's own steps (off = in place, Kudoh's
                                       // lab); auto = on in the push lab, the match and the walk, off elsewhere
   std::string step_placement = "capture";  // --step-placement capture|ipc: capture point or Kwon's cart-pole LQR
-  std::string footwork = "shuffle";   // --footwork shuffle|carry: the clips' steps pressed along the crate, or carried
+  std::string footwork = "carry";     // --footwork shuffle|carry: the clips' steps pressed along the crate, or carried
   bool flat = false;                  // --flat: one level platform (the papers' floor) instead of the uneven crates
   // --priorities kudoh|off|auto: Kudoh's priorities in the balance QP (the trunk's posture x100, the com x30, the arms'
   // return; BalanceQpTuning); auto = the match's own (on in guard), off elsewhere.

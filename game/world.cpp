@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "engine/control/biped/foothold.h"
 #include "engine/control/servo/composite_inertia.h"
 #include "engine/control/servo/implicit_servo.h"
 #include "engine/physics/dynamics.h"
@@ -280,7 +281,14 @@ eng::Result<std::unique_ptr<World>> make_world(const Options& o) {
   w->interaction.recording = !o.record.empty();
   chaos_setup(*w);
   eng::physics::forward_kinematics(w->model, w->data);
-  for (Boxer& b : w->boxers) boxer_sense_contacts(w->data, b);
+  for (Boxer& b : w->boxers) {
+    boxer_sense_contacts(w->data, b);
+    // The steps' foothold searches sorted now: the world's step allocates nothing (the first carried step of a
+    // walk came after any warm-up).
+    for (const eng::control::FootholdParams* p : {&b.settings.tuning.step.foothold, &b.settings.tuning.step.carry_foothold,
+                                                  &b.settings.tuning.balance_step.foothold})
+      eng::control::prepare_foothold_search(*p);
+  }
   return w;
 }
 

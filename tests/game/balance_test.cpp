@@ -170,19 +170,20 @@ TEST(GraphWalk, TheWalkStandsOnTheRootAssistWithinItsLimit) {
 }
 
 TEST(GraphWalk, CarriedFootworkMovesTheFeetWhereTheShuffleDragsThem) {
-  // --footwork carry (step_planner.h): the clips' steps swing on their own path to where the clip puts the foot
-  // relative to the stance foot. Walk seed 10, 20 s: the shuffle's pressed soles cover 26% of the clips' travel,
-  // the carried steps 65% (more than the clip's own on some steps: a foothold on the next crate, or the stance
-  // restored to the clip's), and the walk stands on an assist rms of 32 N m (29 shuffling).
-  const auto shuffle = run({"--scenario", "graph-walk", "--seed", "10"}, 20.0);
-  const auto carried = run({"--scenario", "graph-walk", "--seed", "10", "--footwork", "carry"}, 20.0);
+  // --footwork carry (the default; step_planner.h): the clips' steps swing on their own path to where the clip puts
+  // the foot relative to the stance foot. Walk seed 10, 20 s: the shuffle's pressed soles cover 26% of the clips'
+  // travel, the carried steps 43% (more than the clip's own on some steps: a foothold on the next crate, or the
+  // stance restored to the clip's; none on a step the gate holds for the weight shift), and the walk stands on an
+  // assist rms of 31 N m (29 shuffling).
+  const auto shuffle = run({"--scenario", "graph-walk", "--seed", "10", "--footwork", "shuffle"}, 20.0);
+  const auto carried = run({"--scenario", "graph-walk", "--seed", "10"}, 20.0);
   EXPECT_FALSE(carried.fell) << "fell at " << carried.fell_at << " s (" << carried.fell_reason << ")";
   ASSERT_GE(shuffle.step_travel_count, 5);
   ASSERT_GE(carried.step_travel_count, 5);
   const double shuffled = shuffle.step_travel_sum / shuffle.step_travel_count;
   const double carry = carried.step_travel_sum / carried.step_travel_count;
-  EXPECT_LT(shuffled, 0.4);
-  EXPECT_GT(carry, 0.5);
+  EXPECT_LT(shuffled, 0.3);
+  EXPECT_GT(carry, 0.4);
   ASSERT_GT(carried.time_upright, 0.0);
   EXPECT_LT(std::sqrt(carried.root_torque_sq_dt / carried.time_upright), 45.0);
 }

@@ -1,6 +1,7 @@
 #include "engine/control/biped/foothold.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -35,34 +36,50 @@ bool foothold_ok(GroundHeight ground, const Eigen::Vector2d& ankle, double yaw, 
   return ok;
 }
 
+namespace {
+// Candidates in order of cost (ties: the grid order, deterministic); a search takes the first good one. The order
+// depends on the search's shape alone, so it is sorted once per thread and shape, not per call: a balance step
+// searches every tick it re-plans, and the step allocates nothing once warm. A few shapes are kept (balance steps'
+// and carried steps' footholds alternate; re-sorted at each switch, the sort was an allocation in the walk's step).
+struct Candidate {
+  double cost;
+  int i, j;
+};
+struct CandidateOrder {
+  double max_shift = -1.0, grid = 0.0, lateral_cost = 0.0, back_cost = 0.0;
+  std::vector<Candidate> cand;
+};
+const CandidateOrder& candidate_order(const FootholdParams& p) {
+  thread_local std::array<CandidateOrder, 4> orders;
+  thread_local size_t next = 0;
+  for (const CandidateOrder& o : orders)
+    if (o.max_shift == p.max_shift && o.grid == p.grid && o.lateral_cost == p.lateral_cost && o.back_cost == p.back_cost)
+      return o;
+  CandidateOrder& o = orders[next];
+  next = (next + 1) % orders.size();
+  const int n = static_cast<int>(std::floor(p.max_shift / p.grid));
+  o.cand.clear();
+  for (int i = -n; i <= n; ++i)
+    for (int j = -n; j <= n; ++j) {
+      const double a = i * p.grid, c = j * p.grid;
+      if (a * a + c * c > p.max_shift * p.max_shift + 1e-12) continue;
+      o.cand.push_back({(i < 0 ? p.back_cost : 1.0) * a * a + p.lateral_cost * c * c, i, j});
+    }
+  // Ties in the grid order (i, then j): std::sort with them is stable_sort's order, without its buffer.
+  std::sort(o.cand.begin(), o.cand.end(), [](const Candidate& x, const Candidate& y) {
+    return x.cost != y.cost ? x.cost < y.cost : x.i != y.i ? x.i < y.i : x.j < y.j;
+  });
+  o.max_shift = p.max_shift, o.grid = p.grid, o.lateral_cost = p.lateral_cost, o.back_cost = p.back_cost;
+  return o;
+}
+
+}  // namespace
+
+void prepare_foothold_search(const FootholdParams& p) { candidate_order(p); }
+
 Foothold find_foothold(GroundHeight ground, const Eigen::Vector2d& ankle, double yaw, double frame_yaw,
                        const FootholdParams& p) {
-  // Candidates in order of cost (ties: the grid order, deterministic); the first good one wins. The order depends on
-  // the search's shape alone, so it is sorted once per thread and shape (on the first call, found or not), not per
-  // call: a balance step searches every tick it re-plans, and the step allocates nothing once warm.
-  struct Candidate {
-    double cost;
-    int i, j;
-  };
-  struct Order {
-    double max_shift = -1.0, grid = 0.0, lateral_cost = 0.0, back_cost = 0.0;
-    std::vector<Candidate> cand;
-  };
-  thread_local Order order;
-  if (order.max_shift != p.max_shift || order.grid != p.grid || order.lateral_cost != p.lateral_cost ||
-      order.back_cost != p.back_cost) {
-    const int n = static_cast<int>(std::floor(p.max_shift / p.grid));
-    order.cand.clear();
-    for (int i = -n; i <= n; ++i)
-      for (int j = -n; j <= n; ++j) {
-        const double a = i * p.grid, c = j * p.grid;
-        if (a * a + c * c > p.max_shift * p.max_shift + 1e-12) continue;
-        order.cand.push_back({(i < 0 ? p.back_cost : 1.0) * a * a + p.lateral_cost * c * c, i, j});
-      }
-    std::stable_sort(order.cand.begin(), order.cand.end(),
-                     [](const Candidate& x, const Candidate& y) { return x.cost < y.cost; });
-    order.max_shift = p.max_shift, order.grid = p.grid, order.lateral_cost = p.lateral_cost, order.back_cost = p.back_cost;
-  }
+  const CandidateOrder& order = candidate_order(p);
   Foothold r;
   if (foothold_ok(ground, ankle, yaw, p)) {
     r.found = true;

@@ -44,6 +44,10 @@ struct Foothold {
   bool found = false;                               // false: nothing within max_shift (shift stays zero)
 };
 
+// Sorts the search's candidate order for this shape now (per thread; a few shapes are kept): searches with it then
+// allocate nothing. For a caller whose step must not allocate (the game's world step), at setup.
+void prepare_foothold_search(const FootholdParams& p);
+
 // The cheapest shift (|along|^2, times back_cost against frame_yaw, + lateral_cost |across|^2, along = the direction
 // frame_yaw) on the search grid that makes foothold_ok true; zero when the spot is already good.
 Foothold find_foothold(GroundHeight ground, const Eigen::Vector2d& ankle, double yaw, double frame_yaw,
