@@ -62,8 +62,7 @@ GateEvent lift_off_gate_decide(LiftGate& g, bool& swing, const std::vector<Eigen
                                std::vector<Eigen::Vector2d>* pts = nullptr);
 
 // The quick-step test alone: xi at the touch-down (swing_left from now, or step.swing when set) inside the stance +
-// landing hull. hull: the
-// stance + landing hull out (may be stance_hull itself: read first); pts: scratch.
+// landing hull. hull: the stance + landing hull out (may be stance_hull itself: read first); pts: scratch.
 bool quick_step_capturable(const std::vector<Eigen::Vector2d>& stance_hull, const Eigen::Vector2d& xi,
                            double swing_left, const ClipStep& step, const LiftOffGateTuning& t,
                            std::vector<Eigen::Vector2d>& pts, std::vector<Eigen::Vector2d>& hull);
