@@ -387,6 +387,7 @@ void actuate(QpBalance& q, BalanceTick& tick) {
   // too late), and the rest of the body during a step only in the player's hands: dragged through a recovery's
   // steps, a boxer swung an arm to 30-31 m/s (the chaos soak's match, seeds 5 and 8, 200 s), while with no hands on it
   // the limit during a step cost pushes (Yin's five, seeds 1-48: 227 of 240 against 230; left 394 N seed 4 fell).
+  // The arms alone, at that limit, cost the same seed 4; with a looser one (step_arm_strength) they keep it.
   const bool handled = d.time < b.ctl.handled_until;
   const bool losing_balance = unsupported || handled || up.z() < std::cos(tq.losing_balance_tilt);
   const eng::control::BalanceStep& step = b.ctl.balance_steps.step;
@@ -399,7 +400,11 @@ void actuate(QpBalance& q, BalanceTick& tick) {
     if (n > tq.joint_torque_limit) t *= tq.joint_torque_limit / n;
     const bool swinging = swing_leg && (bone == swing_leg->thigh || bone == swing_leg->shank || bone == swing_leg->foot);
     const bool limited = losing_balance && !swinging && (!step.active || handled);
-    if (limited) eng::control::limit_torque_by_speed(t, d.v.segment(body.v_index, body.nv), tq.speed_strength);
+    const bool arm = q.arm[size_t(bone)] || q.arm[size_t(skel.parent[bone])];  // upper arm, forearm, glove
+    if (limited)
+      eng::control::limit_torque_by_speed(t, d.v.segment(body.v_index, body.nv), tq.speed_strength);
+    else if (losing_balance && step.active && arm)
+      eng::control::limit_torque_by_speed(t, d.v.segment(body.v_index, body.nv), tq.step_arm_strength);
   }
   b.ctl.root_torque = finite ? q.out.root_assist : Eigen::Vector3d::Zero();
 }

@@ -75,6 +75,11 @@ struct BalanceQpTuning {
   // losing_balance_tilt from the desired), each joint's strength falls with its speed (joint_strength.h, Hill): full
   // to 20 rad/s, none driving it past 30. A plan that spun the arms as reaction wheels no longer can.
   eng::control::TorqueVelocityLimit speed_strength{20.0, 30.0};
+  // ... and during a balance step the arms' (upper arm, forearm, glove) a looser one, where the rest of the body has
+  // none: a stunned boxer tilting 45 deg over a step spun an arm back from 180 deg off its pose, the glove at 38 m/s
+  // (the chaos soak, match seed 7 at 229.8 s, no hands on it; 29 m/s with this). Yin's five pushes, seeds 1-8: 40 of
+  // 40 as without it; seeds 1-48: 229 of 240 against 230 (docs/decisions/joint-speed.md).
+  eng::control::TorqueVelocityLimit step_arm_strength{25.0, 40.0};
   double losing_balance_tilt = 30.0 * M_PI / 180.0;  // rad
   int min_support_contacts = 3;       // fewer contact points in the plan: no support polygon ...
   double few_contacts_task_scale = 1e-2;  // ... and the com / momentum tasks priced this much lower

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "game/world.h"
 
@@ -69,9 +70,11 @@ void health_after_step(World& w) {
   };
   // d.com_world / v_body are step1's (the start of this step): one step behind q, v; enough for the bounds.
   for (const Boxer& b : w.boxers)
-    for (int body : b.bodies.body) {
+    for (size_t i = 0; i < b.bodies.body.size(); ++i) {
+      const int body = b.bodies.body[i];
       const double s = speed_of(body);
-      if (s > h.max_body_speed) h.max_body_speed = s, h.worst_speed_at = d.time;
+      if (s > h.max_body_speed)
+        h.max_body_speed = s, h.worst_speed_at = d.time, h.worst_speed_boxer = b.index, h.worst_speed_bone = int(i);
       h.bodies_below_floor += inside(d.com_world[body]);
     }
   for (const ThrownObject& o : w.interaction.objects) {
@@ -87,6 +90,9 @@ nlohmann::json health_report(const World& w) {
   return {{"non_finite_steps", h.non_finite_steps},
           {"max_body_speed_mps", h.max_body_speed},
           {"max_body_speed_at_s", h.worst_speed_at},
+          {"max_body_speed_body", h.worst_speed_bone < 0 ? std::string()
+                                      : "boxer " + std::to_string(h.worst_speed_boxer) + " " +
+                                            w.boxer_desc.skeleton.name[size_t(h.worst_speed_bone)]},
           {"max_object_speed_mps", h.max_object_speed},
           {"bodies_below_floor", h.bodies_below_floor},
           {"max_penetration_m", h.max_penetration},

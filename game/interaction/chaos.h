@@ -25,6 +25,7 @@ struct Health {
   long bodies_below_floor = 0;          // body-steps with a body's centre under the floor or inside a crate (> 2 cm)
   double max_penetration = 0.0;         // m, the deepest contact
   double worst_speed_at = -1.0;         // s, when max_body_speed was seen
+  int worst_speed_boxer = -1, worst_speed_bone = -1;  // ... and whose body (for tracing a soak's outlier)
   double crates_top = -1.0;             // m, the highest crate top (a body centre above it is in no crate)
 };
 

@@ -593,6 +593,7 @@ void match_after_step(World& w) {
     mt.apart = apart && !mt.over ? mt.apart + kPhysicsDt : 0.0;
     if (mt.apart >= mt.tuning.apart_time) {
       back_to_marks(w);
+      ++mt.apart_resets;
       mt.apart = 0.0;
     }
   }
@@ -704,6 +705,7 @@ nlohmann::json match_report(const World& w) {
           {"player_commands_taken", pair([](const MatchFighter& f) { return f.commands_taken; })},
           {"round_seconds", mt.round_seconds},
           {"resets_to_marks", mt.resets},
+          {"apart_resets", mt.apart_resets},
           {"round", static_cast<int>(w.data.time / mt.round_seconds) + 1},
           {"ended_at_s", w.data.time},  // the run's end: a knockdown less than the count before it has no up_at_s yet
           {"getups", getups},

@@ -157,6 +157,7 @@ struct Match {
   double round_seconds = 180.0;
   bool over = false;
   int resets = 0;  // times the referee brought the boxers back to their marks (after a get-up, or apart too long)
+  int apart_resets = 0;  // of those, apart too long (neither stepped back into reach)
   double apart = 0.0;  // s both standing and out of reach of each other
   ReplayBuffer replay;  // the last kReplaySeconds of the bodies' coordinates at 60 Hz (the window's instant replay)
   std::string result;  // "" while fighting; set by a knock-out (or at the report: points)
