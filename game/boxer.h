@@ -73,8 +73,6 @@ struct BoxerMetrics {
   long samples = 0;
   std::vector<double> err_sq_upright;  // the same, only the samples before the first fall
   long samples_upright = 0;
-  Eigen::Vector3d last_com = Eigen::Vector3d::Zero();
-  bool have_com = false;
   // Diagnostic trace, in the report as boxers[i].trace (first 4 s at 20 Hz, plus the sample at the fall). Columns:
   // t, foot yaw error l/r (deg, actual - desired heading), foot tilt l/r (deg), the right (rear) sole normal's lean
   // forward / left (deg, heading frame), com - support centre (x, y; heading frame, m; centre = mid of the two
