@@ -66,6 +66,7 @@ void boxer_measure(const eng::physics::Model& m, const eng::physics::Data& d, co
         const Eigen::Vector2d& u = mt.step_travel[k];
         const double f = (sole - mt.step_from[k]).dot(u) / u.squaredNorm();
         ++mt.step_travel_count, mt.step_travel_sum += f, mt.step_travel_sq += f * f;
+        mt.steps_landed_in_place += (sole - mt.step_from[k]).norm() < BoxerMetrics::kInPlace;
         mt.step_pending[k] = false;
       }
     }

@@ -114,6 +114,15 @@ void gate_lift_off(const eng::physics::Model& m, const eng::physics::Data& d, co
       if (preview.carried) {
         ankle = preview.landing + preview.shift;
         step.swing = preview.duration;
+        // A landing where the foot already stands (the relative landing reproduces the stance the feet have) is no
+        // step: the foot stays down (a boxer marking time: a walk's step_back runs lifted the rear foot and put it
+        // back within 2 cm, eight times in 3 s, carried walk seed 21).
+        if ((ankle - d.x[fb].p.head<2>()).norm() < b.settings.tuning.step.carry_in_place) {
+          b.ctl.gate[k].skipped = true, b.ctl.gate[k].holding = false;
+          swing[k] = false;
+          ++b.metrics.steps_in_place;
+          continue;
+        }
       }
       const eng::control::SoleShape& sole = b.settings.tuning.step.foothold.sole;
       b.scratch.landing.clear();

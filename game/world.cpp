@@ -434,6 +434,8 @@ nlohmann::json world_report(const World& w) {
                       {"fell_at_s", m.fell_at},
                       {"steps_taken", m.steps_taken},
                       {"steps_skipped", m.steps_skipped},
+                      {"steps_in_place", m.steps_in_place},
+                      {"steps_landed_in_place", m.steps_landed_in_place},
                       {"step_travel", step_travel_report(m)},
                       {"balance_steps", m.balance_steps},
                       {"return_steps", m.return_steps},

@@ -172,9 +172,9 @@ TEST(GraphWalk, TheWalkStandsOnTheRootAssistWithinItsLimit) {
 TEST(GraphWalk, CarriedFootworkMovesTheFeetWhereTheShuffleDragsThem) {
   // --footwork carry (the default; step_planner.h): the clips' steps swing on their own path to where the clip puts
   // the foot relative to the stance foot. Walk seed 10, 20 s: the shuffle's pressed soles cover 26% of the clips'
-  // travel, the carried steps 43% (more than the clip's own on some steps: a foothold on the next crate, or the
-  // stance restored to the clip's; none on a step the gate holds for the weight shift), and the walk stands on an
-  // assist rms of 31 N m (29 shuffling).
+  // travel, the carried steps 70% (more than the clip's own on some steps: a foothold on the next crate, or the
+  // stance restored to the clip's; none on a step the gate holds for the weight shift; 6 more, their landing where
+  // the foot stood, not taken), and the walk stands on an assist rms of 30 N m (29 shuffling).
   const auto shuffle = run({"--scenario", "graph-walk", "--seed", "10", "--footwork", "shuffle"}, 20.0);
   const auto carried = run({"--scenario", "graph-walk", "--seed", "10"}, 20.0);
   EXPECT_FALSE(carried.fell) << "fell at " << carried.fell_at << " s (" << carried.fell_reason << ")";
@@ -186,6 +186,31 @@ TEST(GraphWalk, CarriedFootworkMovesTheFeetWhereTheShuffleDragsThem) {
   EXPECT_GT(carry, 0.4);
   ASSERT_GT(carried.time_upright, 0.0);
   EXPECT_LT(std::sqrt(carried.root_torque_sq_dt / carried.time_upright), 45.0);
+}
+
+TEST(GraphWalk, ACarriedStepWhoseLandingIsWhereTheFootStandsIsNotTaken) {
+  // The carried landing is relative to the stance foot; when the feet already stand as the clip ends, it is where the
+  // foot is, and the foot was lifted and put back within 2 cm (a boxer marking time: 40% of the walks' clip steps).
+  // Walk seed 21, 30 s: with StepTuning::carry_in_place off, steps land in place; with it (the default) those steps
+  // are not taken and none lands in place.
+  auto walk = [](bool in_place_rule) {
+    auto o = boxing::parse_cli({"--scenario", "graph-walk", "--seed", "21"});
+    EXPECT_TRUE(o.ok());
+    auto w = boxing::make_world(*o);
+    EXPECT_TRUE(w.ok()) << w.error();
+    boxing::World& world = **w;
+    if (!in_place_rule) world.boxers[0].settings.tuning.step.carry_in_place = 0.0;
+    for (int i = 0; i < int(30.0 / boxing::kPhysicsDt); ++i) boxing::step_world(world);
+    return world.boxers[0].metrics;
+  };
+  const auto marking_time = walk(false);
+  const auto m = walk(true);
+  EXPECT_GT(marking_time.steps_landed_in_place, 0);
+  EXPECT_EQ(marking_time.steps_in_place, 0);
+  EXPECT_FALSE(m.fell) << "fell at " << m.fell_at << " s (" << m.fell_reason << ")";
+  EXPECT_GT(m.steps_in_place, 0);
+  EXPECT_EQ(m.steps_landed_in_place, 0);
+  EXPECT_GE(m.step_travel_count, 3);  // the steps that go somewhere are still taken
 }
 
 TEST(Fall, AFallenBoxerGoesLimpAndStaysBounded) {

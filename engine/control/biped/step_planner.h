@@ -43,6 +43,7 @@ struct StepTuning {
   double carry_max_extra = 0.12;    // m
   double carry_edge_clearance = 0.02;  // m, a sole rising past a higher top travels once this far above it
   double carry_late = 0.15;         // s, a carried swing not down this long after its duration is set down anyway
+  double carry_in_place = 0.02;     // m, a carried landing this near where the foot stands is not stepped (the gate's)
   double carry_pass_clearance = 0.16;  // m, the path bent around the stance foot (balance_step.h)
   // The carried landing's foothold: the balance steps' margins (a swing lands within a few cm, not exactly), and a
   // shift away from the stance foot (a longer step) costs 4 times one toward it: a landing shifted 9-13 cm farther
