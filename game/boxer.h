@@ -41,7 +41,7 @@ struct BoxerMetrics {
   double time_upright = 0.0;
   int steps_taken = 0, steps_skipped = 0;  // balance QP: the clip's steps lifted off / held down (gate_lift_off)
   int steps_in_place = 0;  // carried footwork: the clip's steps not taken, their landing where the foot stands
-  int steps_landed_in_place = 0;  // the clip's steps taken that set the sole down within kInPlace of where it lifted
+  int steps_landed_in_place = 0;  // of the steps step_travel follows: set down within kInPlace of their lift-off
   static constexpr double kInPlace = 0.02;  // m
   // How far the clip's steps carried the feet: per step lifted (its clip travel over kStepTravelMin), the foot's
   // displacement from lift-off to its next planting along the clip's travel, as a fraction of it (1: where the clip
