@@ -215,6 +215,14 @@ void observe_push(const eng::physics::Model& m, const eng::physics::Data& d, Box
   st.push_have_vcom = true;
 }
 
+bool stance_can_fight(const eng::physics::Data& d, const Boxer& b) {
+  const eng::control::BalanceStepTuning& t = b.settings.tuning.balance_step;
+  const Eigen::Vector2d l = sole_centre(d, b, 0).head<2>(), r = sole_centre(d, b, 1).head<2>();
+  const Eigen::Vector2d fwd(std::cos(b.stance.heading), std::sin(b.stance.heading)), left(-fwd.y(), fwd.x());
+  const double apart = (l - r).norm();
+  return left.dot(l - r) >= t.return_keep_width && apart >= t.min_gap && apart <= t.max_reach;
+}
+
 // BALANCE STEPS (balance_step.h): Yin & van de Panne's three phases on the balance QP. Measurements:
 // docs/decisions/balance-steps.md.
 void take_balance_steps(const eng::physics::Model& m, const eng::physics::Data& d,
@@ -315,10 +323,7 @@ void take_balance_steps(const eng::physics::Model& m, const eng::physics::Data& 
         for (int j = 0; j < 2; ++j)
           want[j] = (b.scratch.fk_P[feet[j]] + b.scratch.fk_W[feet[j]] * g.centre).head<2>();
         const Eigen::Vector2d to = sole[1 - r] + (want[r] - want[1 - r]);
-        const Eigen::Vector2d fwd(std::cos(b.stance.heading), std::sin(b.stance.heading)), left(-fwd.y(), fwd.x());
-        const double apart = (sole[0] - sole[1]).norm();
-        const bool keep = left.dot(sole[0] - sole[1]) >= t.return_keep_width && apart >= t.min_gap && apart <= t.max_reach;
-        if ((to - sole[r]).norm() > t.return_tolerance && !keep && b.settings.stepping) {
+        if ((to - sole[r]).norm() > t.return_tolerance && !stance_can_fight(d, b) && b.settings.stepping) {
           st.shifting = r;  // first the weight goes over the other foot (below), then the foot steps
           st.shift_time = 0.0;
           st.return_to = to;
@@ -338,7 +343,7 @@ void take_balance_steps(const eng::physics::Model& m, const eng::physics::Data& 
     eng::control::convex_hull_2d(corners[1 - r], other);
     if (st.shift_time > t.return_shift_max || other.empty() || st.step.active) {
       st.shifting = -1;
-    } else if (eng::control::outside_distance(other, xi) < -t.return_shift_margin) {
+    } else if (eng::control::outside_distance(other, xi) < -t.return_shift_margin && vcom.norm() < t.return_lift_speed) {
       pose_fk(desc.skeleton, b.desired.pose, b.scratch.fk_W, b.scratch.fk_P);
       eng::control::start_balance_step(s, r, true, sole[r], st.return_to, sole[1 - r], t.pass_clearance,
                                        eng::control::heading_of(b.scratch.fk_W[feet[r]]), t.return_duration, ground, g,

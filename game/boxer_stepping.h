@@ -24,6 +24,10 @@ void plan_steps(const eng::physics::Data& d, const eng::assets::CharacterDesc& d
 // punch, a thrown crate, the player's hand. Low-passed into b.ctl.balance_steps.push_acc (m/s^2); read by
 // take_balance_steps (a landing is re-planned until the push is over).
 void observe_push(const eng::physics::Model& m, const eng::physics::Data& d, Boxer& b, double dt);
+// The feet stand as the body can fight from (BalanceStepTuning::return_keep_width): the left sole's centre at least
+// that far left of the right's across the stance's heading (not crossed, not in line) and the two between min_gap
+// and max_reach apart. The return step's test (no return from such a stance), and the match AI's before footwork.
+bool stance_can_fight(const eng::physics::Data& d, const Boxer& b);
 // Balance steps (balance_step.h), after plan_steps: a step of the balance's own overrides the clip's feet (swing,
 // b.ctl.step) while it lasts; started when the capture point leaves the feet, or to return to the stance after.
 void take_balance_steps(const eng::physics::Model& m, const eng::physics::Data& d,

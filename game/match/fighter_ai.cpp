@@ -87,7 +87,8 @@ const char* fighter_ai_tick(FighterAi& ai, eng::anim::GraphWalker& walker, const
     }
   }
   // Footwork: keep fighting distance with the graph's steps (not too often: a step takes ~0.3 s and settles).
-  if (v.free && (v.too_far || v.too_close) && v.time >= ai.next_step) {
+  // Pressing a rocked opponent: each step in as soon as the last has ended (free: back in guard).
+  if (v.free && !v.feet_busy && (v.too_far || v.too_close) && (v.time >= ai.next_step || (v.press && v.too_far))) {
     ai.next_step = v.time + 2.0;
     const char* step = v.too_far ? "step_forward" : "step_back";
     if (walker.request_clip(step)) ai.last_request = step;

@@ -62,6 +62,11 @@ struct FighterView {
   bool in_range = false;       // the other's head within reach of a straight punch
   bool too_far = false;        // out of reach: step in
   bool too_close = false;      // crowded: step out
+  // A balance step (or its return to the stance) under way, or the feet left where the body cannot fight from
+  // (stance_can_fight: crossed, in line, too wide): no footwork asked for. With the stagger, a step_forward over a
+  // return step (match seed 19) and one from a switched stance (seed 5) put the boxer down.
+  bool feet_busy = false;
+  bool press = false;          // the other boxer was just rocked back: step in after him at once (not at the cadence)
   const char* other_started = nullptr;  // the punch the other boxer started this tick (nullptr: none)
   double slow = 1.0;           // attempts rate scale (a stunned boxer punches less)
 };

@@ -5,6 +5,7 @@
 
 #include "engine/anim/motion_graph.h"
 #include "engine/physics/dynamics.h"
+#include "game/boxer_stepping.h"
 #include "game/character_builder.h"
 #include "game/match/punch_aim.h"
 #include "game/world.h"
@@ -194,7 +195,10 @@ void resolve_landing(World& w, int attacker) {
     knock_down(w, k, e.hit_part == "head" ? dir : Eigen::Vector3d(-dir), "knocked down by a punch");
     return;
   }
-  if (eng::anim::GraphWalker* walker = def.source.walker()) walker->force_clip(head ? "hit_head" : "hit_body");
+  const bool rocked = mt.tuning.rock_damage > 0.0 && e.damage >= mt.tuning.rock_damage;
+  if (rocked) fd.rocked_at = w.data.time, ++fd.rocked;
+  if (eng::anim::GraphWalker* walker = def.source.walker())
+    walker->force_clip(rocked ? "stagger" : head ? "hit_head" : "hit_body");
 }
 
 // Where to hit: points on the opponent's head (face, chin, both temples, crown) or torso (solar plexus, both sides
@@ -576,6 +580,10 @@ void match_before_control(World& w) {
     // boxers 1-1.5 s after a punch (3 of 4 falls without a hit, seeds 1-20).
     v.too_far = dist > kReach + 0.03 && opponent_up && t - f.last_hit_at > mt.tuning.step_in_after_hit;
     v.too_close = dist < kReach - 0.25;
+    v.press = t - mt.fighter[1 - k].rocked_at < mt.tuning.press_for;
+    // A balance step, its settling or its return under way (balance_step.h phases 1-3): the feet are the balance's.
+    const auto& bst = b.ctl.balance_steps;
+    v.feet_busy = bst.step.active || bst.recovering || bst.shifting >= 0 || !stance_can_fight(w.data, b);
     v.other_started = f.saw_punch;
     v.slow = b.ctl.state.state == BoxerState::Stunned ? 0.4 : 1.0;
     f.saw_punch = nullptr;
@@ -590,6 +598,8 @@ void match_after_step(World& w) {
   {
     bool apart = standing_state(w.boxers[0].ctl.state.state) && standing_state(w.boxers[1].ctl.state.state);
     for (int k = 0; k < 2 && apart; ++k) apart = !in_range(w, k);
+    // Not while a boxer presses a rocked opponent: its steps in close the gap (a stagger's 0.3 m takes two or three).
+    for (const MatchFighter& f : mt.fighter) apart = apart && w.data.time - f.rocked_at >= mt.tuning.press_for;
     mt.apart = apart && !mt.over ? mt.apart + kPhysicsDt : 0.0;
     if (mt.apart >= mt.tuning.apart_time) {
       back_to_marks(w);
@@ -689,6 +699,7 @@ nlohmann::json match_report(const World& w) {
           {"falls_without_hit", pair([](const MatchFighter& f) { return f.falls_without_hit; })},
           {"falls_after_hit", pair([](const MatchFighter& f) { return f.falls_after_hit; })},
           {"balance_steps_after_hit", pair([](const MatchFighter& f) { return f.balance_steps_after_hit; })},
+          {"rocked", pair([](const MatchFighter& f) { return f.rocked; })},
           {"landed_speed_median", speeds.empty() ? 0.0 : speeds[speeds.size() / 2]},
           {"landed_fist_speed_median", fists.empty() ? 0.0 : fists[fists.size() / 2]},
           {"consciousness", pair([&w](const MatchFighter& f) {

@@ -66,6 +66,13 @@ struct MatchTuning {
   double neutral_corner_within = 1.6;  // m, pelvis to pelvis: at a get-up's start a standing opponent this close goes to its mark
   double apart_time = 2.0;           // s both out of reach before the referee brings them back to their marks
   double step_in_after_hit = 2.0;    // s after a landed hit before the AI steps in (footwork) again
+  // A hard hit short of a knockdown rocks the boxer back: at this much damage or more the stagger clip (two steps
+  // back, its feet carried by the balance steps) plays instead of the reaction in place (0 = never).
+  double rock_damage = 0.25;
+  // s after rocking the opponent back that the AI presses him: steps in as soon as it is free and out of reach, not
+  // at the footwork's cadence (one step per 2 s). Without it the rocked boxer ended out of reach and the referee
+  // brought them back (docs/decisions/footwork.md).
+  double press_for = 4.0;
   // The boxers' balance QP priorities in the fight (BalanceQpTuning::trunk_weight, com_weight; 1 / 1 elsewhere).
   double trunk_weight = 100.0;
   double com_weight = 30.0;
@@ -128,6 +135,8 @@ struct MatchFighter {
   int landing = -1;              // events index of a landed punch still summing its impulse (on the opponent)
   double landing_until = 0.0;
   double last_hit_at = -1e9;     // last landed hit ON this boxer
+  double rocked_at = -1e9;       // last hit that rocked this boxer back (MatchTuning::rock_damage)
+  int rocked = 0;                // hits that rocked this boxer back
   double still = 0.0;            // s lying still
   double settled = 0.0;          // s up and still (the end of a stand-up)
   int getup = -1;                // getups index of the current knockdown

@@ -63,8 +63,13 @@ struct BalanceStepTuning {
   // guard's, and their return fell more often than the push.
   double return_keep_width = 0.10;
   double return_duration = 0.45;   // s, the return step's swing (unhurried)
-  double return_shift_margin = 0.02;  // m, it lifts once the capture point is this far inside the other sole ...
+  // m, it lifts once the capture point is this far inside the other sole (2 cm: at the stance toe's edge, and the body
+  // ran off it; match seed 19 with the stagger) ...
+  double return_shift_margin = 0.04;
   double return_shift_max = 1.0;      // s, ... and is given up when the weight shift takes longer
+  // m/s, ... and the com has come to rest over it (the shift done, not passing through: lifted with the com moving
+  // at 0.35 m/s, the body ran on off the stance foot's edge; match seed 19 with the stagger)
+  double return_lift_speed = 0.15;
   // The swing leg lands with at most this share of its length (hip to ankle, knee straight) between its hip and the
   // landing's ankle: for a landing lower than that, the com comes down (the stance knee bends; step_reach_drop, the
   // balance QP's com height task, at most its max_com_acc). Held at the clip's height, the com stayed up (it rose 6 cm
