@@ -5,7 +5,8 @@
 // probability after a human reaction time (~0.2 s; visual simple reaction times of trained athletes are 0.15-0.25 s):
 // a block, a slip or a duck, chosen for the punch coming (hooks are ducked or blocked, straights slipped or blocked).
 // A few style parameters per boxer (aggression, defence, favourite punches) drawn from the seed; the favourites are
-// weighted by what has landed on this opponent so far (FighterStyle::prior_throws).
+// weighted by what has landed on this opponent so far (FighterStyle::prior_throws). It keeps fighting distance with
+// the graph's steps, and presses an opponent a hard hit rocked back (FighterView::press).
 #include <array>
 #include <string>
 

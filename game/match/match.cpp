@@ -581,7 +581,8 @@ void match_before_control(World& w) {
     v.too_far = dist > kReach + 0.03 && opponent_up && t - f.last_hit_at > mt.tuning.step_in_after_hit;
     v.too_close = dist < kReach - 0.25;
     v.press = t - mt.fighter[1 - k].rocked_at < mt.tuning.press_for;
-    // A balance step, its settling or its return under way (balance_step.h phases 1-3): the feet are the balance's.
+    // A balance step, its settling or its return under way (balance_step.h phases 1-3), or a stance the body cannot
+    // fight from: the feet are the balance's, and the AI asks for no footwork (fighter_ai.h).
     const auto& bst = b.ctl.balance_steps;
     v.feet_busy = bst.step.active || bst.recovering || bst.shifting >= 0 || !stance_can_fight(w.data, b);
     v.other_started = f.saw_punch;
@@ -598,7 +599,7 @@ void match_after_step(World& w) {
   {
     bool apart = standing_state(w.boxers[0].ctl.state.state) && standing_state(w.boxers[1].ctl.state.state);
     for (int k = 0; k < 2 && apart; ++k) apart = !in_range(w, k);
-    // Not while a boxer presses a rocked opponent: its steps in close the gap (a stagger's 0.3 m takes two or three).
+    // Not while a boxer presses a rocked opponent: its steps in close the gap (the stagger's 0.2-0.3 m).
     for (const MatchFighter& f : mt.fighter) apart = apart && w.data.time - f.rocked_at >= mt.tuning.press_for;
     mt.apart = apart && !mt.over ? mt.apart + kPhysicsDt : 0.0;
     if (mt.apart >= mt.tuning.apart_time) {

@@ -6,7 +6,8 @@
 //      or an arm it was BLOCKED. The contact's impulse over the next impact_window seconds is the punch's impulse;
 //      damage = impulse x location factor (head > body) lowers the opponent's consciousness (the root spring's,
 //      engine/control/servo/root_spring.h, whose assist and the servo gains scale with it);
-//   3. reactions: a landed punch forces the reaction clip (hit_head / hit_body), a heavy one or too little
+//   3. reactions: a landed punch forces the reaction clip (hit_head / hit_body; a hard one the stagger, two steps
+//      back: MatchTuning::rock_damage), a heavy one or too little
 //      consciousness left a knockdown (fall_back / fall_forward by the push's direction): the body falls limp the way
 //      the hit and the crates make it fall; nothing is scripted but the clip;
 //   4. the count: once down and lying still, the stand-up is chosen from the lying pose (getup_back / getup_front)
@@ -67,7 +68,8 @@ struct MatchTuning {
   double apart_time = 2.0;           // s both out of reach before the referee brings them back to their marks
   double step_in_after_hit = 2.0;    // s after a landed hit before the AI steps in (footwork) again
   // A hard hit short of a knockdown rocks the boxer back: at this much damage or more the stagger clip (two steps
-  // back, its feet carried by the balance steps) plays instead of the reaction in place (0 = never).
+  // back, carried like any clip's steps; the balance steps catch the rest) plays instead of the reaction in place
+  // (0 = never).
   double rock_damage = 0.25;
   // s after rocking the opponent back that the AI presses him: steps in as soon as it is free and out of reach, not
   // at the footwork's cadence (one step per 2 s). Without it the rocked boxer ended out of reach and the referee
