@@ -112,6 +112,9 @@ struct BoxerControlState {
   // Balance QP: the step each foot is taking (step_planner.h) and its lift-off gate (lift_off_gate.h).
   eng::control::StepPlan step[2];
   eng::control::LiftGate gate[2];
+  // The clip's step as it was when the clip lifted the foot (StepTuning::carry_whole): its whole travel and swing.
+  eng::control::Touchdown clip_step[2];
+  bool clip_step_known[2] = {false, false};
   eng::control::BalanceStepState balance_steps;  // balance QP: the balance's own steps (balance_step.h)
   eng::control::CartPoleLqr step_lqr;            // StepPlacement::InvertedPendulumLqr's gain (solved at setup)
   // The player's hands (or the chaos soak's) hold or push one of its bodies until this time (s; step_world): the

@@ -60,6 +60,21 @@ eng::control::Touchdown touchdown_of(const eng::anim::Skeleton& skel, Boxer& b, 
   eng::control::Touchdown td = eng::control::find_touchdown(skel, preview, b.bones.foot[k], b.settings.tuning.foot,
                                                             b.settings.tuning.step, b.scratch.fk_W, b.scratch.fk_P);
   td.apart = (b.scratch.fk_P[b.bones.foot[k]] - b.scratch.fk_P[b.bones.foot[1 - k]]).head<2>();  // (its last frame's)
+  // A carried step held down for the weight shift is still the clip's whole step when it lifts (carry_whole): from
+  // where the physical foot still stands, the clip's whole travel, swung in the clip's whole time. Judged by what was
+  // left, a step_forward's rear step held 0.03 s kept 3 cm of its 16 (under carry_min_travel: not carried) and 0.03 s
+  // to its touch-down (under the gate's min_swing: skipped), and the rear foot stayed behind: the lead's next step
+  // lands relative to it, so a boxer stepping in moved its pelvis 7-8 cm a step (match seeds 3, 5, 7: 200 of the
+  // step_forwards' 235 rear steps skipped; docs/decisions/footwork.md, fifth round).
+  const eng::control::StepTuning& t = b.settings.tuning.step;
+  if (t.carry && t.carry_whole) {
+    if (!b.ctl.clip_step_known[k]) {
+      b.ctl.clip_step[k] = td, b.ctl.clip_step_known[k] = true;
+    } else {
+      td.travel = b.ctl.clip_step[k].travel;
+      td.ahead = std::max(td.ahead, b.ctl.clip_step[k].ahead);
+    }
+  }
   return td;
 }
 
@@ -77,7 +92,11 @@ void gate_lift_off(const eng::physics::Model& m, const eng::physics::Data& d, co
                    const Arena& arena, Boxer& b, bool swing[2], double dt) {
   const auto& skel = desc.skeleton;
   const int pelvis = b.bodies.body[0];
+  // A balance step under way resets the gates every tick (take_balance_steps) and overrides the clip's feet: the
+  // clip's steps judged meanwhile are not counted (each had counted once a tick, inflating steps_taken).
+  const bool count = !b.ctl.balance_steps.step.active;
   for (int k = 0; k < 2; ++k) {
+    if (!swing[k]) b.ctl.clip_step_known[k] = false;  // the clip's next step is another
     if (!eng::control::lift_off_gate_due(b.ctl.gate[k], swing[k], !b.ctl.state.fallen())) continue;
     // The other (stance) foot's ground contacts and the capture point. Carried footwork counts none while that foot
     // is in a carried step (still touching as it lifts, it had let this foot go too: both feet swinging, carried
@@ -120,7 +139,7 @@ void gate_lift_off(const eng::physics::Model& m, const eng::physics::Data& d, co
         if ((ankle - d.x[fb].p.head<2>()).norm() < b.settings.tuning.step.carry_in_place) {
           b.ctl.gate[k].skipped = true, b.ctl.gate[k].holding = false;
           swing[k] = false;
-          ++b.metrics.steps_in_place;
+          if (count) ++b.metrics.steps_in_place;
           continue;
         }
       }
@@ -133,6 +152,7 @@ void gate_lift_off(const eng::physics::Model& m, const eng::physics::Data& d, co
     }
     const eng::control::GateEvent e = eng::control::lift_off_gate_decide(
         b.ctl.gate[k], swing[k], stance, xi, td.ahead, dt, b.settings.tuning.gate, b.scratch.hull, step, &b.scratch.pts);
+    if (!count) continue;
     if (e == eng::control::GateEvent::StepTaken) {
       ++b.metrics.steps_taken;
       b.metrics.step_travel[k] = Eigen::Rotation2Dd(b.stance.heading) * td.travel;

@@ -45,6 +45,10 @@ struct StepTuning {
   double carry_late = 0.15;         // s, a carried swing not down this long after its duration is set down anyway
   double carry_in_place = 0.02;     // m, a carried landing this near where the foot stands is not stepped (the gate's)
   double carry_pass_clearance = 0.16;  // m, the path bent around the stance foot (balance_step.h)
+  // A carried step the lift-off gate held for its weight shift lifts as the clip's whole step: its travel and swing
+  // as at the clip's lift-off, not what is left of them (false: what is left). Held, a step_forward's rear foot had
+  // 3 cm of the clip's travel left, too little to carry and too late to swing: it stayed, and the stance stretched.
+  bool carry_whole = true;
   // The carried landing's foothold: the balance steps' margins (a swing lands within a few cm, not exactly), and a
   // shift away from the stance foot (a longer step) costs 4 times one toward it: a landing shifted 9-13 cm farther
   // stretched the stance to 0.8 m and the next steps fell out of it.
