@@ -64,8 +64,8 @@ eng::control::Touchdown touchdown_of(const eng::anim::Skeleton& skel, Boxer& b, 
   // where the physical foot still stands, the clip's whole travel, swung in the clip's whole time. Judged by what was
   // left, a step_forward's rear step held 0.03 s kept 3 cm of its 16 (under carry_min_travel: not carried) and 0.03 s
   // to its touch-down (under the gate's min_swing: skipped), and the rear foot stayed behind: the lead's next step
-  // lands relative to it, so a boxer stepping in moved its pelvis 7-8 cm a step (match seeds 3, 5, 7: 200 of the
-  // step_forwards' 235 rear steps skipped; docs/decisions/footwork.md, fifth round).
+  // lands relative to it, so a boxer stepping in moved its pelvis 7-8 cm a step (match seeds 3, 5, 7: 81 rear steps
+  // skipped after a hold, the rear foot following 35 of 71 lead steps; docs/decisions/footwork.md, fifth round).
   const eng::control::StepTuning& t = b.settings.tuning.step;
   if (t.carry && t.carry_whole) {
     if (!b.ctl.clip_step_known[k]) {

@@ -215,11 +215,12 @@ TEST(GraphWalk, ACarriedStepWhoseLandingIsWhereTheFootStandsIsNotTaken) {
 
 TEST(Drill, ACarriedStepHeldForItsWeightShiftIsStillTheClipsWholeStep) {
   // The gate holds a carried step down until the capture point allows it (the weight shift) while the clip plays on.
-  // Judged by what was left of the clip's step when it opened, step_forward's rear step on seed 3 kept 3 cm of its
-  // 16 and 0.03 s to its touch-down: not carried, too late to swing, skipped (StepTuning::carry_whole off: 3 of the
-  // drill's 3 plays). Lifted as the clip's whole step (the default), none is skipped for that.
+  // Judged by what was left of the clip's step when it opened, a step_forward rear step kept a few cm of its 16 and a
+  // few hundredths of a second to its touch-down: not carried, too late to swing, skipped (StepTuning::carry_whole
+  // off). Lifted as the clip's whole step (the default), it is taken. Seed 30's drill, 10 s: 4 steps taken and 1
+  // skipped with it off, 5 and none with it on.
   auto drill = [](bool whole) {
-    auto o = boxing::parse_cli({"--scenario", "stand", "--seed", "3", "--clip", "step_forward"});
+    auto o = boxing::parse_cli({"--scenario", "stand", "--seed", "30", "--clip", "step_forward"});
     EXPECT_TRUE(o.ok());
     auto w = boxing::make_world(*o);
     EXPECT_TRUE(w.ok()) << w.error();
@@ -230,9 +231,10 @@ TEST(Drill, ACarriedStepHeldForItsWeightShiftIsStillTheClipsWholeStep) {
   };
   const auto left = drill(false);
   const auto m = drill(true);
-  EXPECT_GE(left.steps_skipped, 2);
+  EXPECT_GE(left.steps_skipped, 1);
   EXPECT_EQ(m.steps_skipped, 0);
-  EXPECT_GE(m.steps_taken, left.steps_taken);
+  EXPECT_GT(m.steps_taken, left.steps_taken);           // the held step lifts ...
+  EXPECT_GT(m.step_travel_count, left.step_travel_count);  // ... and goes somewhere
   EXPECT_FALSE(m.fell) << "fell at " << m.fell_at << " s (" << m.fell_reason << ")";
 }
 
