@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <string>
 #include <utility>
 
@@ -14,13 +15,16 @@
 
 namespace {
 
-// Runs a scenario for `seconds` of simulated time; returns boxer 0's metrics.
-boxing::BoxerMetrics run(const std::vector<std::string>& args, double seconds) {
+// Runs a scenario for `seconds` of simulated time, boxer 0's tuning edited first by `tune` when given; returns boxer
+// 0's metrics.
+boxing::BoxerMetrics run(const std::vector<std::string>& args, double seconds,
+                         const std::function<void(boxing::BoxerTuning&)>& tune = {}) {
   auto o = boxing::parse_cli(args);
   EXPECT_TRUE(o.ok());
   auto w = boxing::make_world(*o);
   EXPECT_TRUE(w.ok()) << w.error();
   boxing::World& world = **w;
+  if (tune) tune(world.boxers[0].settings.tuning);
   const int steps = int(seconds / boxing::kPhysicsDt);
   for (int i = 0; i < steps; ++i) boxing::step_world(world);
   return world.boxers[0].metrics;
@@ -193,18 +197,9 @@ TEST(GraphWalk, ACarriedStepWhoseLandingIsWhereTheFootStandsIsNotTaken) {
   // foot is, and the foot was lifted and put back within 2 cm (a boxer marking time: 40% of the walks' clip steps).
   // Walk seed 21, 30 s: with StepTuning::carry_in_place off, steps land in place; with it (the default) those steps
   // are not taken and none lands in place.
-  auto walk = [](bool in_place_rule) {
-    auto o = boxing::parse_cli({"--scenario", "graph-walk", "--seed", "21"});
-    EXPECT_TRUE(o.ok());
-    auto w = boxing::make_world(*o);
-    EXPECT_TRUE(w.ok()) << w.error();
-    boxing::World& world = **w;
-    if (!in_place_rule) world.boxers[0].settings.tuning.step.carry_in_place = 0.0;
-    for (int i = 0; i < int(30.0 / boxing::kPhysicsDt); ++i) boxing::step_world(world);
-    return world.boxers[0].metrics;
-  };
-  const auto marking_time = walk(false);
-  const auto m = walk(true);
+  const auto marking_time = run({"--scenario", "graph-walk", "--seed", "21"}, 30.0,
+                                 [](boxing::BoxerTuning& t) { t.step.carry_in_place = 0.0; });
+  const auto m = run({"--scenario", "graph-walk", "--seed", "21"}, 30.0);
   EXPECT_GT(marking_time.steps_landed_in_place, 0);
   EXPECT_EQ(marking_time.steps_in_place, 0);
   EXPECT_FALSE(m.fell) << "fell at " << m.fell_at << " s (" << m.fell_reason << ")";
@@ -219,18 +214,9 @@ TEST(Drill, ACarriedStepHeldForItsWeightShiftIsStillTheClipsWholeStep) {
   // few hundredths of a second to its touch-down: not carried, too late to swing, skipped (StepTuning::carry_whole
   // off). Lifted as the clip's whole step (the default), it is taken. Seed 30's drill, 10 s: 4 steps taken and 1
   // skipped with it off, 5 and none with it on.
-  auto drill = [](bool whole) {
-    auto o = boxing::parse_cli({"--scenario", "stand", "--seed", "30", "--clip", "step_forward"});
-    EXPECT_TRUE(o.ok());
-    auto w = boxing::make_world(*o);
-    EXPECT_TRUE(w.ok()) << w.error();
-    boxing::World& world = **w;
-    world.boxers[0].settings.tuning.step.carry_whole = whole;
-    for (int i = 0; i < int(10.0 / boxing::kPhysicsDt); ++i) boxing::step_world(world);
-    return world.boxers[0].metrics;
-  };
-  const auto left = drill(false);
-  const auto m = drill(true);
+  const std::vector<std::string> drill = {"--scenario", "stand", "--seed", "30", "--clip", "step_forward"};
+  const auto left = run(drill, 10.0, [](boxing::BoxerTuning& t) { t.step.carry_whole = false; });
+  const auto m = run(drill, 10.0);
   EXPECT_GE(left.steps_skipped, 1);
   EXPECT_EQ(m.steps_skipped, 0);
   EXPECT_GT(m.steps_taken, left.steps_taken);           // the held step lifts ...
