@@ -137,10 +137,12 @@ double deepest_below_crates(World& w, const Boxer& b) {
   return deepest;
 }
 
+}  // namespace
+
 // The referee brings both boxers back to their marks once the downed one is up (a reset, as a fighting game's next
 // exchange: the boxers' steps do not carry them, arena.h, and a fall and get-up leave a boxer up to 0.8 m off its
 // mark, out of reach). Each body is set at rest on its starting pose (the walk in guard again), controllers start over.
-void back_to_marks(World& w, int only = -1) {
+void back_to_marks(World& w, int only) {
   for (Boxer& b : w.boxers) {
     if (only >= 0 && b.index != only) continue;
     eng::anim::GraphWalker* walker = b.source.walker();
@@ -171,9 +173,16 @@ void back_to_marks(World& w, int only = -1) {
     }
     for (auto& s : b.ctl.step) s.active = false;
     for (auto& g : b.ctl.gate) g = {};
+    // The balance's steps start over too (a recovery, a return step's weight shift): kept across the reset, the
+    // weight shift leaned the boxer toward the stance it had left and the AI asked for no footwork meanwhile
+    // (feet_busy); in a variant's match seed 11 the referee reset the two for "apart" five times in 10 s
+    // (docs/decisions/footwork.md, sixth round).
+    b.ctl.balance_steps = {};
   }
   ++w.match.resets;
 }
+
+namespace {
 
 // A landed punch's impulse is summed over the touch; then the damage, the reaction or the knockdown.
 void resolve_landing(World& w, int attacker) {

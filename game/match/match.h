@@ -182,6 +182,8 @@ void match_before_control(World& w);
 void match_after_step(World& w);
 // The player's command for boxer k, queued (the boxer becomes the player's from now on).
 void match_command(World& w, int k, FightCommand c);
+// The referee's reset: boxer `only` (-1: both) set at rest on its mark in guard, its walk and control started over.
+void back_to_marks(World& w, int only = -1);
 // Boxer k's straight punch reaches the other's head (the AI's "in range"; both out of it is the referee's "apart").
 bool in_range(const World& w, int k);
 

@@ -249,6 +249,26 @@ TEST(Match, StandingBoxersOutOfRangeAreBroughtTogether) {
   EXPECT_GT(world.match.fighter[0].thrown + world.match.fighter[1].thrown, 50);  // and the fight goes on
 }
 
+// The referee's reset starts the balance's steps over with the rest of the control: a recovery or a return step's
+// weight shift kept across it leaned the boxer for the stance it had left, with the AI's footwork held meanwhile.
+TEST(Match, AResetToTheMarksStartsTheBalancesStepsOver) {
+  auto w = run_match(3, 1.0);
+  ASSERT_TRUE(w);
+  World& world = *w;
+  eng::control::BalanceStepState& st = world.boxers[0].ctl.balance_steps;
+  st.recovering = true, st.shifting = 1, st.steps_in_recovery = 2, st.settled = 0.3;
+  const int resets = world.match.resets;
+  back_to_marks(world);
+  EXPECT_EQ(world.match.resets, resets + 1);
+  EXPECT_FALSE(st.recovering);
+  EXPECT_EQ(st.shifting, -1);
+  EXPECT_EQ(st.steps_in_recovery, 0);
+  EXPECT_FALSE(st.step.active);
+  // The fight goes on from there: the next second's control starts no return step out of the old state.
+  for (int i = 0; i < 240; ++i) step_world(world);
+  EXPECT_EQ(world.boxers[0].metrics.return_steps, 0);
+}
+
 TEST(Match, PlayersBoxerPunchesOnlyOnCommand) {
   Options o;
   o.headless = true;
