@@ -5,6 +5,7 @@
 // scratch, metrics (observe only: control never reads them).
 #include <Eigen/Geometry>
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -113,8 +114,7 @@ struct BoxerControlState {
   eng::control::StepPlan step[2];
   eng::control::LiftGate gate[2];
   // The clip's step as it was when the clip lifted the foot (StepTuning::carry_whole): its whole travel and swing.
-  eng::control::Touchdown clip_step[2];
-  bool clip_step_known[2] = {false, false};
+  std::optional<eng::control::Touchdown> clip_step[2];  // none: the clip's step not seen yet
   eng::control::BalanceStepState balance_steps;  // balance QP: the balance's own steps (balance_step.h)
   eng::control::CartPoleLqr step_lqr;            // StepPlacement::InvertedPendulumLqr's gain (solved at setup)
   // The player's hands (or the chaos soak's) hold or push one of its bodies until this time (s; step_world): the

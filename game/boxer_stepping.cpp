@@ -68,11 +68,11 @@ eng::control::Touchdown touchdown_of(const eng::anim::Skeleton& skel, Boxer& b, 
   // skipped after a hold, the rear foot following 35 of 71 lead steps; docs/decisions/footwork.md, fifth round).
   const eng::control::StepTuning& t = b.settings.tuning.step;
   if (t.carry && t.carry_whole) {
-    if (!b.ctl.clip_step_known[k]) {
-      b.ctl.clip_step[k] = td, b.ctl.clip_step_known[k] = true;
+    if (!b.ctl.clip_step[k]) {
+      b.ctl.clip_step[k] = td;
     } else {
-      td.travel = b.ctl.clip_step[k].travel;
-      td.ahead = std::max(td.ahead, b.ctl.clip_step[k].ahead);
+      td.travel = b.ctl.clip_step[k]->travel;
+      td.ahead = std::max(td.ahead, b.ctl.clip_step[k]->ahead);
     }
   }
   return td;
@@ -96,7 +96,7 @@ void gate_lift_off(const eng::physics::Model& m, const eng::physics::Data& d, co
   // clip's steps judged meanwhile are not counted (each had counted once a tick, inflating steps_taken).
   const bool count = !b.ctl.balance_steps.step.active;
   for (int k = 0; k < 2; ++k) {
-    if (!swing[k]) b.ctl.clip_step_known[k] = false;  // the clip's next step is another
+    if (!swing[k]) b.ctl.clip_step[k].reset();  // the clip's next step is another
     if (!eng::control::lift_off_gate_due(b.ctl.gate[k], swing[k], !b.ctl.state.fallen())) continue;
     // The other (stance) foot's ground contacts and the capture point. Carried footwork counts none while that foot
     // is in a carried step (still touching as it lifts, it had let this foot go too: both feet swinging, carried
