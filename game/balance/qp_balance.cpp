@@ -178,6 +178,17 @@ void actuate(QpBalance& q, BalanceTick& tick) {
     const double kp = tq.com_omega * tq.com_omega, kd = 2.0 * tq.com_omega;
     in.com_acc = -kp * e - kd * (vcom - v_d);
     if (in.com_acc.norm() > tq.max_com_acc) in.com_acc *= tq.max_com_acc / in.com_acc.norm();
+    // The part of it the soles can give (BalanceQpTuning::com_acc_in_support): only with a root assist to buy the rest,
+    // and not while the player's hands hold or push the body (their force moves the com too: the soles' centre of
+    // pressure no longer bounds its acceleration).
+    if (tq.com_acc_in_support && q.params.max_root_assist > 0.0 && in.contacts.size() >= 3 && d.time >= b.ctl.handled_until) {
+      q.pts.clear();
+      double floor_z = 0.0;
+      for (const auto& c : in.contacts) q.pts.push_back(c.point.head<2>()), floor_z += c.point.z();
+      floor_z /= double(in.contacts.size());  // (the tops under the feet differ by centimetres: small against the com's metre)
+      eng::control::convex_hull_2d_in_place(q.pts, q.ground_hull);
+      in.com_acc = eng::control::ground_com_acceleration(q.ground_hull, com_a, in.com_acc, com_a.z() - floor_z, tq.cop_margin);
+    }
     // A quick step's swing (lift_off_gate.h: capturable once the foot lands, not over the stance foot) and a balance
     // step's (balance_step.h: placed where the capture point will be at touch-down): the com falls toward the landing
     // foot as the linear inverted pendulum does about the stance foot's centre of pressure nearest the capture point,

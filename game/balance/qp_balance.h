@@ -43,6 +43,15 @@ struct BalanceQpTuning {
   // Set there at once, the com ran 0.4 m/s off the far side of a post-step stance 0.5 m wide and the return fell.
   double return_shift_speed = 0.2;    // m/s
   double max_com_acc = 6.0;           // m/s^2, the desired com acceleration's bound
+  // With a root assist (the match's and the walks' root spring), the com task asks the ground only for the horizontal
+  // acceleration its centre of pressure can give: scaled down until that lies cop_margin inside the contacts
+  // (support_polygon.h ground_com_acceleration). Asked for more, the plan bought the rest from the assist: a clip's
+  // own lean or lunge (slip_right, the uppercuts, the hooks) took 60-100 N m rms of it while they played, most of the
+  // walks' assist (docs/decisions/com-acceleration-in-support.md). Not while the player's hands act on the body (their
+  // force moves the com too), and not without the assist (the push lab): there nothing can buy the rest and the plan
+  // trades it against the arms' and trunk's tracking (Kudoh's strategy); the lab was not measured with the limit.
+  bool com_acc_in_support = true;
+  double cop_margin = 0.02;           // m
   // Kudoh's priorities (qp-balance-kudoh-thesis section 3: the trunk's posture held above the com's place): the
   // trunk's orientation tasks (pelvis, abdomen, chest, neck, head) priced trunk_weight times a limb's per unit of
   // inertia, the com / momentum tasks com_weight times the engine's unit price, while the boxer stands on its support
@@ -105,6 +114,7 @@ struct QpBalance {
   bool swing_prev[2] = {false, false};  // the foot was swinging last tick (swing feed-forward)
   Eigen::Vector3d swing_target_prev[2] = {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
   std::vector<Eigen::Vector2d> pts, hull;  // scratch: contact points on the floor, their hull
+  std::vector<Eigen::Vector2d> ground_hull;  // scratch: every ground contact's hull (com_acc_in_support)
   eng::core::LatencyHistogram solve_us;    // wall-clock cost of each solve (report only)
 };
 

@@ -173,6 +173,21 @@ TEST(GraphWalk, TheWalkStandsOnTheRootAssistWithinItsLimit) {
   EXPECT_LT(std::sqrt(m.root_torque_sq_dt / m.time_upright), 45.0);
 }
 
+TEST(Drill, AClipsOwnLungeIsGivenByTheSolesNotBoughtFromTheRootAssist) {
+  // The rear uppercut drill with the root spring on (as the match's boxers fight): asked for the clip's whole com
+  // acceleration, its centre of pressure past the soles, the plan bought the rest from the assist (rms 34 N m);
+  // asked only for what the soles give (BalanceQpTuning::com_acc_in_support), 8 N m, and the boxer stands.
+  const std::vector<std::string> args = {"--scenario", "stand", "--seed", "1", "--clip", "rear_uppercut", "--root-spring", "on"};
+  const auto rms = [](const boxing::BoxerMetrics& m) { return std::sqrt(m.root_torque_sq_dt / m.time_upright); };
+  const auto whole = run(args, 12.0, [](boxing::BoxerTuning& t) { t.qp.com_acc_in_support = false; });
+  const auto soles = run(args, 12.0);
+  ASSERT_FALSE(whole.fell);
+  ASSERT_FALSE(soles.fell) << "fell at " << soles.fell_at << " s (" << soles.fell_reason << ")";
+  ASSERT_GT(whole.time_upright, 0.0);
+  EXPECT_GT(rms(whole), 20.0);  // the assist did carry the lunge before (otherwise this test shows nothing)
+  EXPECT_LT(rms(soles), 0.5 * rms(whole));
+}
+
 TEST(GraphWalk, CarriedFootworkMovesTheFeetWhereTheShuffleDragsThem) {
   // --footwork carry (the default; step_planner.h): the clips' steps swing on their own path to where the clip puts
   // the foot relative to the stance foot. Walk seed 10, 20 s: the shuffle's pressed soles cover 26% of the clips'

@@ -78,4 +78,36 @@ Eigen::Vector2d clamp_to_polygon(const std::vector<Eigen::Vector2d>& hull, const
   return best;
 }
 
+double share_inside(const std::vector<Eigen::Vector2d>& hull, const Eigen::Vector2d& from, const Eigen::Vector2d& delta,
+                    double margin) {
+  const size_t n = hull.size();
+  if (n < 3) return 1.0;
+  // Counter-clockwise: inside is to the left of every edge. For edge a -> b (unit direction u) the point x's inward
+  // distance is u x (x - a); along the move it changes by s (u x delta), so an edge the move heads for bounds s.
+  double share = 1.0;
+  for (size_t i = 0; i < n; ++i) {
+    const Eigen::Vector2d& a = hull[i];
+    const Eigen::Vector2d e = hull[(i + 1) % n] - a;
+    const double len = e.norm();
+    if (len < 1e-12) continue;
+    const double inside = (e.x() * (from.y() - a.y()) - e.y() * (from.x() - a.x())) / len - margin;
+    if (inside < 0.0) return 0.0;
+    const double rate = (e.x() * delta.y() - e.y() * delta.x()) / len;
+    if (rate < 0.0) share = std::min(share, inside / -rate);
+  }
+  return share;
+}
+
+Eigen::Vector3d ground_com_acceleration(const std::vector<Eigen::Vector2d>& hull, const Eigen::Vector3d& com,
+                                        const Eigen::Vector3d& acc, double z, double margin, double g) {
+  if (hull.size() < 3 || z <= 0.0) return acc;
+  const Eigen::Vector2d c = com.head<2>();
+  if (share_inside(hull, c, Eigen::Vector2d::Zero(), margin) <= 0.0) return acc;  // the com near or past an edge
+  const double support = g + acc.z();  // the vertical ground force per unit mass
+  if (support <= 0.0) return acc;      // falling faster than gravity: no pressure to place
+  Eigen::Vector3d out = acc;
+  out.head<2>() *= share_inside(hull, c, -z / support * acc.head<2>(), margin);
+  return out;
+}
+
 }  // namespace eng::control

@@ -18,4 +18,19 @@ void convex_hull_2d_in_place(std::vector<Eigen::Vector2d>& pts, std::vector<Eige
 // it is inside. For a segment or a single point: the closest point of it.
 Eigen::Vector2d clamp_to_polygon(const std::vector<Eigen::Vector2d>& hull, const Eigen::Vector2d& p, double margin);
 
+// How much of a move the support allows: the largest s in [0, 1] for which from + s * delta stays at least `margin`
+// inside every edge of the (counter-clockwise) hull; 0 when `from` itself is not that far inside, 1 for a hull of
+// fewer than three points (no area to stay in: the caller decides). The balance QP scales a com acceleration with
+// it so that the centre of pressure it needs stays on the soles (ground_com_acceleration, below).
+double share_inside(const std::vector<Eigen::Vector2d>& hull, const Eigen::Vector2d& from, const Eigen::Vector2d& delta,
+                    double margin);
+
+// The horizontal com acceleration the ground can give, the closest along the desired one: a com at height z over
+// the contacts accelerating by acc needs its centre of pressure at p = com - z acc_xy / (g + acc_z) (the linear
+// inverted pendulum's ZMP, Kajita et al. 2003; Kudoh sec. 2.3, eq. 2.39). acc's horizontal part is scaled down until
+// p lies `margin` inside the hull. Unchanged when the com's own projection is not that far inside (p = com there:
+// no acceleration is free) or the hull has no area.
+Eigen::Vector3d ground_com_acceleration(const std::vector<Eigen::Vector2d>& hull, const Eigen::Vector3d& com,
+                                        const Eigen::Vector3d& acc, double z, double margin, double g = 9.81);
+
 }  // namespace eng::control

@@ -40,3 +40,41 @@ TEST(SupportPolygon, DegenerateSupportsClampToTheSegmentOrPoint) {
   convex_hull_2d({V(0.3, 0.4)}, hull);
   EXPECT_TRUE(clamp_to_polygon(hull, V(1, 1), 0.1).isApprox(V(0.3, 0.4)));
 }
+
+TEST(SupportPolygon, ShareInsideStopsAMoveAtTheMarginOfTheEdgeItHeadsFor) {
+  std::vector<V> hull;
+  convex_hull_2d({V(-1, -1), V(1, -1), V(1, 1), V(-1, 1)}, hull);
+  using eng::control::share_inside;
+  EXPECT_NEAR(share_inside(hull, V(0, 0), V(2, 0), 0.1), 0.45, 1e-12);   // stops at x = 0.9
+  EXPECT_NEAR(share_inside(hull, V(0, 0), V(-1, 2), 0.1), 0.45, 1e-12);  // the top edge binds first (y = 0.9)
+  EXPECT_NEAR(share_inside(hull, V(0, 0), V(0.5, 0.5), 0.1), 1.0, 1e-12);  // stays inside: all of it
+  EXPECT_NEAR(share_inside(hull, V(0.95, 0), V(-1, 0), 0.1), 0.0, 1e-12);  // starts within the margin: none
+  convex_hull_2d({V(0, 0), V(1, 0)}, hull);  // a segment has no inside to keep to: the caller's call
+  EXPECT_NEAR(share_inside(hull, V(0.5, 0), V(3, 3), 0.1), 1.0, 1e-12);
+}
+
+// A com 1 m over a 0.2 m square of contacts: an acceleration a needs its centre of pressure at com - z a / (g + a_z)
+// (the LIP's ZMP). 3 m/s^2 forward needs it 0.31 m behind the com, past the heel edge; what the soles can give puts it
+// on the margin, 0.08 m behind: a = 0.08 (g + a_z) / z.
+TEST(SupportPolygon, GroundComAccelerationPutsTheCentreOfPressureOnTheMarginAsTheLipSays) {
+  std::vector<V> hull;
+  convex_hull_2d({V(-0.1, -0.1), V(0.1, -0.1), V(0.1, 0.1), V(-0.1, 0.1)}, hull);
+  using eng::control::ground_com_acceleration;
+  const Eigen::Vector3d com(0, 0, 1.0);
+  const double g = 9.81;
+  const Eigen::Vector3d a = ground_com_acceleration(hull, com, Eigen::Vector3d(3, 0, 0), 1.0, 0.02, g);
+  EXPECT_NEAR(a.x(), 0.08 * g, 1e-12);
+  EXPECT_NEAR(a.y(), 0.0, 1e-12);
+  // Pressing down harder (a_z > 0) lets the same centre of pressure give more; the vertical part is kept.
+  const Eigen::Vector3d b = ground_com_acceleration(hull, com, Eigen::Vector3d(0, -3, 2), 1.0, 0.02, g);
+  EXPECT_NEAR(b.y(), -0.08 * (g + 2), 1e-12);
+  EXPECT_EQ(b.z(), 2.0);
+  // The direction is kept (scaled, not clamped to the nearest point of the polygon).
+  const Eigen::Vector3d c = ground_com_acceleration(hull, com, Eigen::Vector3d(4, 2, 0), 1.0, 0.02, g);
+  EXPECT_NEAR(c.y() / c.x(), 0.5, 1e-12);
+  EXPECT_NEAR(c.x(), 0.08 * g, 1e-12);
+  // What the soles can give passes unchanged; so does anything while the com is itself at the edge (nothing free).
+  EXPECT_TRUE(ground_com_acceleration(hull, com, Eigen::Vector3d(0.5, 0.3, 0), 1.0, 0.02, g).isApprox(Eigen::Vector3d(0.5, 0.3, 0)));
+  EXPECT_TRUE(ground_com_acceleration(hull, Eigen::Vector3d(0.09, 0, 1), Eigen::Vector3d(-5, 0, 0), 1.0, 0.02, g)
+                  .isApprox(Eigen::Vector3d(-5, 0, 0)));
+}
