@@ -150,6 +150,7 @@ void actuate(QpBalance& q, BalanceTick& tick) {
       q.pts.clear();
       for (const auto& c : in.contacts) q.pts.push_back(c.point.head<2>());
       eng::control::convex_hull_2d_in_place(q.pts, q.hull);
+      q.ground_hull = q.hull;  // (kept whole for com_acc_in_support: a weight shift below narrows q.hull to one foot)
       Eigen::Vector2d target = eng::control::clamp_to_polygon(q.hull, com_a.head<2>() - e.head<2>(), tq.support_margin);
       // A step held for its weight shift (gate_lift_off): the target goes over the other foot's contacts. The
       // return step's (take_balance_steps) gets there at tq.return_shift_speed.
@@ -182,11 +183,9 @@ void actuate(QpBalance& q, BalanceTick& tick) {
     // and not while the player's hands hold or push the body (their force moves the com too: the soles' centre of
     // pressure no longer bounds its acceleration).
     if (tq.com_acc_in_support && q.params.max_root_assist > 0.0 && in.contacts.size() >= 3 && d.time >= b.ctl.handled_until) {
-      q.pts.clear();
       double floor_z = 0.0;
-      for (const auto& c : in.contacts) q.pts.push_back(c.point.head<2>()), floor_z += c.point.z();
+      for (const auto& c : in.contacts) floor_z += c.point.z();
       floor_z /= double(in.contacts.size());  // (the tops under the feet differ by centimetres: small against the com's metre)
-      eng::control::convex_hull_2d_in_place(q.pts, q.ground_hull);
       in.com_acc = eng::control::ground_com_acceleration(q.ground_hull, com_a, in.com_acc, com_a.z() - floor_z, tq.cop_margin);
     }
     // A quick step's swing (lift_off_gate.h: capturable once the foot lands, not over the stance foot) and a balance

@@ -114,7 +114,7 @@ struct QpBalance {
   bool swing_prev[2] = {false, false};  // the foot was swinging last tick (swing feed-forward)
   Eigen::Vector3d swing_target_prev[2] = {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
   std::vector<Eigen::Vector2d> pts, hull;  // scratch: contact points on the floor, their hull
-  std::vector<Eigen::Vector2d> ground_hull;  // scratch: every ground contact's hull (com_acc_in_support)
+  std::vector<Eigen::Vector2d> ground_hull;  // this tick's hull of every ground contact (com_acc_in_support)
   eng::core::LatencyHistogram solve_us;    // wall-clock cost of each solve (report only)
 };
 
