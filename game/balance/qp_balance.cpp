@@ -186,7 +186,8 @@ void actuate(QpBalance& q, BalanceTick& tick) {
       double floor_z = 0.0;
       for (const auto& c : in.contacts) floor_z += c.point.z();
       floor_z /= double(in.contacts.size());  // (the tops under the feet differ by centimetres: small against the com's metre)
-      in.com_acc = eng::control::ground_com_acceleration(q.ground_hull, com_a, in.com_acc, com_a.z() - floor_z, tq.cop_margin);
+      in.com_acc = eng::control::ground_com_acceleration(q.ground_hull, com_a, in.com_acc, com_a.z() - floor_z, tq.cop_margin,
+                                                         tq.cop_ramp);
     }
     // A quick step's swing (lift_off_gate.h: capturable once the foot lands, not over the stance foot) and a balance
     // step's (balance_step.h: placed where the capture point will be at touch-down): the com falls toward the landing

@@ -52,6 +52,10 @@ struct BalanceQpTuning {
   // trades it against the arms' and trunk's tracking (Kudoh's strategy); the lab was not measured with the limit.
   bool com_acc_in_support = true;
   double cop_margin = 0.02;           // m
+  // ... and with the com itself within cop_margin of an edge (nothing free there), the com task's demand goes to the
+  // assist in a ramp, all of it cop_ramp further out (support_polygon.h). Handed over at once (0), it came in 230 N m
+  // bursts, most of what was left of the walks' assist (docs/decisions/com-acceleration-in-support.md, second round).
+  double cop_ramp = 0.04;             // m
   // Kudoh's priorities (qp-balance-kudoh-thesis section 3: the trunk's posture held above the com's place): the
   // trunk's orientation tasks (pelvis, abdomen, chest, neck, head) priced trunk_weight times a limb's per unit of
   // inertia, the com / momentum tasks com_weight times the engine's unit price, while the boxer stands on its support

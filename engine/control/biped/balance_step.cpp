@@ -17,22 +17,6 @@ Eigen::Vector2d capture_point_after(const Eigen::Vector2d& xi, const Eigen::Vect
   return p + (xi - p) * std::exp(omega * t);
 }
 
-double outside_distance(const std::vector<Eigen::Vector2d>& hull, const Eigen::Vector2d& x) {
-  if (hull.empty()) return std::numeric_limits<double>::infinity();
-  if (hull.size() < 3) return (clamp_to_polygon(hull, x, 0.0) - x).norm();
-  // Counter-clockwise: inside is to the left of every edge. Outside: the distance to the nearest point of the
-  // polygon; inside: minus the distance to the nearest edge.
-  double worst = -std::numeric_limits<double>::infinity();
-  for (size_t i = 0; i < hull.size(); ++i) {
-    const Eigen::Vector2d a = hull[i], e = hull[(i + 1) % hull.size()] - a;
-    const double len = e.norm();
-    if (len < 1e-12) continue;
-    worst = std::max(worst, (e.x() * (x.y() - a.y()) - e.y() * (x.x() - a.x())) / -len);
-  }
-  if (worst <= 0.0) return worst;
-  return (clamp_to_polygon(hull, x, 0.0) - x).norm();
-}
-
 int unloaded_foot(const Eigen::Vector2d& vcom, const Eigen::Vector2d sole[2]) {
   return vcom.dot(sole[1] - sole[0]) > 0.0 ? 0 : 1;
 }

@@ -19,6 +19,7 @@
 #include "engine/control/biped/foot_geometry.h"
 #include "engine/control/biped/foothold.h"
 #include "engine/control/biped/ground.h"
+#include "engine/control/biped/support_polygon.h"  // outside_distance
 
 namespace eng::control {
 
@@ -133,10 +134,6 @@ double lip_omega(double com_height, double g = 9.81);
 // The capture point after time t with the centre of pressure held at p: xi(t) = p + (xi - p) e^{omega t}
 // (the LIP's divergent component, Pratt et al. 2006 eq. 8).
 Eigen::Vector2d capture_point_after(const Eigen::Vector2d& xi, const Eigen::Vector2d& p, double omega, double t);
-
-// How far the point lies outside the convex polygon (counter-clockwise hull; <= 0 inside: minus the distance to the
-// nearest edge). An empty hull: +infinity.
-double outside_distance(const std::vector<Eigen::Vector2d>& hull, const Eigen::Vector2d& x);
 
 // Yin's rule: the foot the com's motion unloads steps. load_line = foot 1's sole centre - foot 0's; the push moving
 // the com toward foot 1 (v . load_line > 0) unloads foot 0.

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace eng::control {
 
@@ -98,14 +99,34 @@ double share_inside(const std::vector<Eigen::Vector2d>& hull, const Eigen::Vecto
   return share;
 }
 
+double outside_distance(const std::vector<Eigen::Vector2d>& hull, const Eigen::Vector2d& x) {
+  if (hull.empty()) return std::numeric_limits<double>::infinity();
+  if (hull.size() < 3) return (clamp_to_polygon(hull, x, 0.0) - x).norm();
+  // Counter-clockwise: inside is to the left of every edge. Outside: the distance to the nearest point of the
+  // polygon; inside: minus the distance to the nearest edge.
+  double worst = -std::numeric_limits<double>::infinity();
+  for (size_t i = 0; i < hull.size(); ++i) {
+    const Eigen::Vector2d a = hull[i], e = hull[(i + 1) % hull.size()] - a;
+    const double len = e.norm();
+    if (len < 1e-12) continue;
+    worst = std::max(worst, (e.x() * (x.y() - a.y()) - e.y() * (x.x() - a.x())) / -len);
+  }
+  if (worst <= 0.0) return worst;
+  return (clamp_to_polygon(hull, x, 0.0) - x).norm();
+}
+
 Eigen::Vector3d ground_com_acceleration(const std::vector<Eigen::Vector2d>& hull, const Eigen::Vector3d& com,
-                                        const Eigen::Vector3d& acc, double z, double margin, double g) {
+                                        const Eigen::Vector3d& acc, double z, double margin, double ramp, double g) {
   if (hull.size() < 3 || z <= 0.0) return acc;
   const Eigen::Vector2d c = com.head<2>();
-  if (share_inside(hull, c, Eigen::Vector2d::Zero(), margin) <= 0.0) return acc;  // the com near or past an edge
+  Eigen::Vector3d out = acc;
+  const double inside = -outside_distance(hull, c);
+  if (inside < margin) {  // the com near or past an edge: the caller buys what is handed over
+    if (ramp > 0.0) out.head<2>() *= std::clamp((margin - inside) / ramp, 0.0, 1.0);
+    return out;
+  }
   const double support = g + acc.z();  // the vertical ground force per unit mass
   if (support <= 0.0) return acc;      // falling faster than gravity: no pressure to place
-  Eigen::Vector3d out = acc;
   out.head<2>() *= share_inside(hull, c, -z / support * acc.head<2>(), margin);
   return out;
 }

@@ -25,12 +25,21 @@ Eigen::Vector2d clamp_to_polygon(const std::vector<Eigen::Vector2d>& hull, const
 double share_inside(const std::vector<Eigen::Vector2d>& hull, const Eigen::Vector2d& from, const Eigen::Vector2d& delta,
                     double margin);
 
+// How far the point lies outside the convex polygon (counter-clockwise hull; <= 0 inside: minus the distance to the
+// nearest edge). An empty hull: +infinity.
+double outside_distance(const std::vector<Eigen::Vector2d>& hull, const Eigen::Vector2d& x);
+
 // The horizontal com acceleration the ground can give, the closest along the desired one: a com at height z over
 // the contacts accelerating by acc needs its centre of pressure at p = com - z acc_xy / (g + acc_z) (the linear
 // inverted pendulum's ZMP, Kajita et al. 2003; Kudoh sec. 2.3, eq. 2.39). acc's horizontal part is scaled down until
-// p lies `margin` inside the hull. Unchanged when the com's own projection is not that far inside (p = com there:
-// no acceleration is free) or the hull has no area.
+// p lies `margin` inside the hull. Unchanged when the hull has no area.
+// Where the com's own projection is not `margin` inside, no acceleration is free (p = com there) and what the com
+// task asks is the caller's to buy (the root assist). It is handed over in a ramp, none of it at `margin` inside, all
+// of it `ramp` further out (0: all at once): handed over whole at the margin, the demand jumped from the soles' ~0 to
+// the com task's 6 m/s^2 in one tick, and the walks' remaining assist came in those jumps (230 N m bursts as a
+// rolled foot's few contacts shrank the hull under the com; docs/decisions/com-acceleration-in-support.md).
 Eigen::Vector3d ground_com_acceleration(const std::vector<Eigen::Vector2d>& hull, const Eigen::Vector3d& com,
-                                        const Eigen::Vector3d& acc, double z, double margin, double g = 9.81);
+                                        const Eigen::Vector3d& acc, double z, double margin, double ramp = 0.0,
+                                        double g = 9.81);
 
 }  // namespace eng::control

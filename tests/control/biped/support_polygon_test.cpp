@@ -62,19 +62,40 @@ TEST(SupportPolygon, GroundComAccelerationPutsTheCentreOfPressureOnTheMarginAsTh
   using eng::control::ground_com_acceleration;
   const Eigen::Vector3d com(0, 0, 1.0);
   const double g = 9.81;
-  const Eigen::Vector3d a = ground_com_acceleration(hull, com, Eigen::Vector3d(3, 0, 0), 1.0, 0.02, g);
+  const Eigen::Vector3d a = ground_com_acceleration(hull, com, Eigen::Vector3d(3, 0, 0), 1.0, 0.02, 0.0, g);
   EXPECT_NEAR(a.x(), 0.08 * g, 1e-12);
   EXPECT_NEAR(a.y(), 0.0, 1e-12);
   // Pressing down harder (a_z > 0) lets the same centre of pressure give more; the vertical part is kept.
-  const Eigen::Vector3d b = ground_com_acceleration(hull, com, Eigen::Vector3d(0, -3, 2), 1.0, 0.02, g);
+  const Eigen::Vector3d b = ground_com_acceleration(hull, com, Eigen::Vector3d(0, -3, 2), 1.0, 0.02, 0.0, g);
   EXPECT_NEAR(b.y(), -0.08 * (g + 2), 1e-12);
   EXPECT_EQ(b.z(), 2.0);
   // The direction is kept (scaled, not clamped to the nearest point of the polygon).
-  const Eigen::Vector3d c = ground_com_acceleration(hull, com, Eigen::Vector3d(4, 2, 0), 1.0, 0.02, g);
+  const Eigen::Vector3d c = ground_com_acceleration(hull, com, Eigen::Vector3d(4, 2, 0), 1.0, 0.02, 0.0, g);
   EXPECT_NEAR(c.y() / c.x(), 0.5, 1e-12);
   EXPECT_NEAR(c.x(), 0.08 * g, 1e-12);
-  // What the soles can give passes unchanged; so does anything while the com is itself at the edge (nothing free).
-  EXPECT_TRUE(ground_com_acceleration(hull, com, Eigen::Vector3d(0.5, 0.3, 0), 1.0, 0.02, g).isApprox(Eigen::Vector3d(0.5, 0.3, 0)));
-  EXPECT_TRUE(ground_com_acceleration(hull, Eigen::Vector3d(0.09, 0, 1), Eigen::Vector3d(-5, 0, 0), 1.0, 0.02, g)
+  // What the soles can give passes unchanged; so does anything while the com is itself at the edge (nothing free)
+  // with no ramp.
+  EXPECT_TRUE(ground_com_acceleration(hull, com, Eigen::Vector3d(0.5, 0.3, 0), 1.0, 0.02, 0.0, g).isApprox(Eigen::Vector3d(0.5, 0.3, 0)));
+  EXPECT_TRUE(ground_com_acceleration(hull, Eigen::Vector3d(0.09, 0, 1), Eigen::Vector3d(-5, 0, 0), 1.0, 0.02, 0.0, g)
                   .isApprox(Eigen::Vector3d(-5, 0, 0)));
+}
+
+// The same 0.2 m square, the com 1 m up, asked for 5 m/s^2 back inside from near the +x edge. With a ramp of 0.08 m the
+// demand the soles cannot give is handed over in proportion to how far the com is past the 0.02 m margin: an eighth
+// 1 cm inside the edge, half 2 cm outside, all of it 6 cm outside. Across the margin the acceleration is continuous
+// (without the ramp it jumps from ~0 to the whole 5 m/s^2).
+TEST(SupportPolygon, GroundComAccelerationHandsTheRestOverInARampPastTheMargin) {
+  std::vector<V> hull;
+  convex_hull_2d({V(-0.1, -0.1), V(0.1, -0.1), V(0.1, 0.1), V(-0.1, 0.1)}, hull);
+  using eng::control::ground_com_acceleration;
+  const Eigen::Vector3d back(-5, 0, 0);
+  auto at = [&](double x, double ramp) { return ground_com_acceleration(hull, Eigen::Vector3d(x, 0, 1), back, 1.0, 0.02, ramp); };
+  EXPECT_NEAR(at(0.09, 0.08).x(), -5.0 / 8.0, 1e-12);
+  EXPECT_NEAR(at(0.12, 0.08).x(), -2.5, 1e-12);
+  EXPECT_NEAR(at(0.16, 0.08).x(), -5.0, 1e-12);
+  EXPECT_NEAR(at(0.30, 0.08).x(), -5.0, 1e-12);
+  EXPECT_EQ(at(0.12, 0.08).z(), 0.0);
+  // Continuous at the margin (x = 0.08): both sides near zero, 1e-4 m apart.
+  EXPECT_LT(std::abs(at(0.0799, 0.08).x() - at(0.0801, 0.08).x()), 0.01);
+  EXPECT_GT(std::abs(at(0.0799, 0.0).x() - at(0.0801, 0.0).x()), 4.9);  // the jump the ramp removes
 }
