@@ -35,14 +35,6 @@ TEST(CapturePointAfter, MatchesTheLinearInvertedPendulumsClosedForm) {
   EXPECT_NEAR(w, std::sqrt(9.81 / 0.95), 1e-12);
 }
 
-TEST(OutsideDistance, IsSignedDistanceToTheSoleRectangle) {
-  const auto hull = sole_at(Vector2d::Zero());
-  EXPECT_NEAR(eng::control::outside_distance(hull, Vector2d(0.23, 0.0)), 0.10, 1e-12);   // 10 cm past the toe
-  EXPECT_NEAR(eng::control::outside_distance(hull, Vector2d(0.0, 0.0)), -0.05, 1e-12);   // centre: 5 cm from the sides
-  EXPECT_NEAR(eng::control::outside_distance(hull, Vector2d(0.16, 0.09)), 0.05, 1e-12);  // off the corner (3, 4, 5)
-  EXPECT_TRUE(std::isinf(eng::control::outside_distance({}, Vector2d::Zero())));
-}
-
 TEST(UnloadedFoot, IsTheOneTheComMovesAwayFrom) {
   const Vector2d sole[2] = {Vector2d(0.0, 0.15), Vector2d(0.0, -0.15)};  // left, right
   EXPECT_EQ(eng::control::unloaded_foot(Vector2d(0.0, 0.5), sole), 1);   // pushed left: the right leg steps

@@ -8,6 +8,16 @@ using eng::control::clamp_to_polygon;
 using eng::control::convex_hull_2d;
 using V = Eigen::Vector2d;
 
+TEST(OutsideDistance, IsSignedDistanceToTheSoleRectangle) {
+  // A sole's rectangle, 0.26 x 0.10 m, centred at the origin, facing +x.
+  std::vector<V> hull;
+  convex_hull_2d({V(-0.13, -0.05), V(0.13, -0.05), V(0.13, 0.05), V(-0.13, 0.05)}, hull);
+  EXPECT_NEAR(eng::control::outside_distance(hull, V(0.23, 0.0)), 0.10, 1e-12);   // 10 cm past the toe
+  EXPECT_NEAR(eng::control::outside_distance(hull, V(0.0, 0.0)), -0.05, 1e-12);   // centre: 5 cm from the sides
+  EXPECT_NEAR(eng::control::outside_distance(hull, V(0.16, 0.09)), 0.05, 1e-12);  // off the corner (3, 4, 5)
+  EXPECT_TRUE(std::isinf(eng::control::outside_distance({}, V::Zero())));
+}
+
 TEST(SupportPolygon, HullOfASquareWithInteriorAndEdgePointsIsItsFourCornersCounterClockwise) {
   std::vector<V> hull;
   convex_hull_2d({V(0, 0), V(1, 0), V(1, 1), V(0, 1), V(0.5, 0.5), V(0.5, 0), V(0.2, 0.7)}, hull);
