@@ -6,35 +6,17 @@
 
 #include "engine/physics/broadphase.h"
 #include "engine/physics/narrowphase.h"
+#include "physics/physics_test_util.h"
 
 using namespace eng::physics;
+using eng::physics::test::box_shape;
+using eng::physics::test::capsule_shape;
+using eng::physics::test::plane_shape;
+using eng::physics::test::sphere_shape;
 
 namespace {
 
-Shape sphere(double r) {
-  Shape s;
-  s.type = ShapeType::Sphere;
-  s.radius = r;
-  return s;
-}
-Shape capsule(double r, double hl) {
-  Shape s;
-  s.type = ShapeType::Capsule;
-  s.radius = r;
-  s.half_length = hl;
-  return s;
-}
-Shape box(double x, double y, double z) {
-  Shape s;
-  s.type = ShapeType::Box;
-  s.half_extents = Vec3(x, y, z);
-  return s;
-}
-Shape plane() {
-  Shape s;
-  s.type = ShapeType::Plane;
-  return s;
-}
+Shape box(double x, double y, double z) { return box_shape(Vec3(x, y, z)); }
 Pose at(const Vec3& p, const Mat3& R = Mat3::Identity()) { return Pose{R, p}; }
 Mat3 rot(double angle, const Vec3& axis) { return Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix(); }
 
@@ -46,7 +28,7 @@ int collide(const Shape& a, const Pose& xa, const Shape& b, const Pose& xb, Cont
 
 TEST(Narrowphase, SphereSphereDepthNormalAndMidpoint) {
   ContactPoint c[4];
-  ASSERT_EQ(collide(sphere(0.5), at({0, 0, 0}), sphere(0.3), at({0.7, 0, 0}), c), 1);
+  ASSERT_EQ(collide(sphere_shape(0.5), at({0, 0, 0}), sphere_shape(0.3), at({0.7, 0, 0}), c), 1);
   EXPECT_NEAR(c[0].depth, 0.1, 1e-12);
   EXPECT_TRUE(c[0].normal.isApprox(Vec3::UnitX()));
   EXPECT_NEAR(c[0].position.x(), 0.45, 1e-12);  // midway between the surfaces at 0.5 and 0.4
@@ -54,31 +36,31 @@ TEST(Narrowphase, SphereSphereDepthNormalAndMidpoint) {
 
 TEST(Narrowphase, SeparatedBeyondMarginGivesNothingAndWithinMarginIsSpeculative) {
   ContactPoint c[4];
-  EXPECT_EQ(collide(sphere(0.5), at({0, 0, 0}), sphere(0.5), at({1.1, 0, 0}), c, 0.05), 0);
-  ASSERT_EQ(collide(sphere(0.5), at({0, 0, 0}), sphere(0.5), at({1.03, 0, 0}), c, 0.05), 1);
+  EXPECT_EQ(collide(sphere_shape(0.5), at({0, 0, 0}), sphere_shape(0.5), at({1.1, 0, 0}), c, 0.05), 0);
+  ASSERT_EQ(collide(sphere_shape(0.5), at({0, 0, 0}), sphere_shape(0.5), at({1.03, 0, 0}), c, 0.05), 1);
   EXPECT_NEAR(c[0].depth, -0.03, 1e-12);
 }
 
 TEST(Narrowphase, SphereOnPlaneAndOnBoxFace) {
   ContactPoint c[4];
-  ASSERT_EQ(collide(sphere(0.2), at({1, 2, 0.15}), plane(), at({0, 0, 0}), c), 1);
+  ASSERT_EQ(collide(sphere_shape(0.2), at({1, 2, 0.15}), plane_shape(), at({0, 0, 0}), c), 1);
   EXPECT_NEAR(c[0].depth, 0.05, 1e-12);
   EXPECT_TRUE(c[0].normal.isApprox(-Vec3::UnitZ()));  // from the sphere down to the plane
-  ASSERT_EQ(collide(box(1, 1, 0.5), at({0, 0, 0}), sphere(0.2), at({0.3, 0.1, 0.68}), c), 1);
+  ASSERT_EQ(collide(box(1, 1, 0.5), at({0, 0, 0}), sphere_shape(0.2), at({0.3, 0.1, 0.68}), c), 1);
   EXPECT_NEAR(c[0].depth, 0.02, 1e-12);
   EXPECT_TRUE(c[0].normal.isApprox(Vec3::UnitZ()));  // from the box up to the sphere
 }
 
 TEST(Narrowphase, SphereCentreInsideBoxPushesOutThroughNearestFace) {
   ContactPoint c[4];
-  ASSERT_EQ(collide(sphere(0.1), at({0.45, 0, 0}), box(0.5, 0.5, 0.5), at({0, 0, 0}), c), 1);
+  ASSERT_EQ(collide(sphere_shape(0.1), at({0.45, 0, 0}), box(0.5, 0.5, 0.5), at({0, 0, 0}), c), 1);
   EXPECT_NEAR(c[0].depth, 0.15, 1e-12);
   EXPECT_TRUE(c[0].normal.isApprox(-Vec3::UnitX()));  // the box lies on the sphere's -x side
 }
 
 TEST(Narrowphase, CapsuleLyingOnABoxGivesTwoPoints) {
   ContactPoint c[4];
-  const int n = collide(capsule(0.05, 0.2), at({0, 0, 0.54}, rot(M_PI / 2, Vec3::UnitY())), box(0.5, 0.5, 0.5),
+  const int n = collide(capsule_shape(0.05, 0.2), at({0, 0, 0.54}, rot(M_PI / 2, Vec3::UnitY())), box(0.5, 0.5, 0.5),
                         at({0, 0, 0}), c);
   ASSERT_EQ(n, 2);
   for (int i = 0; i < n; ++i) {
@@ -91,7 +73,7 @@ TEST(Narrowphase, CapsuleAcrossACrateEdgeFindsTheDeepInteriorPoint) {
   ContactPoint c[4];
   // A shin lying across the edge x = 0.5 of a crate top, tilted so both caps are clear but the middle is in.
   const Mat3 R = rot(M_PI / 2, Vec3::UnitY()) * rot(0.0, Vec3::UnitZ());
-  const int n = collide(capsule(0.05, 0.4), at({0.5, 0, 0.54}, R * rot(0.2, Vec3::UnitX())), box(0.5, 0.5, 0.5),
+  const int n = collide(capsule_shape(0.05, 0.4), at({0.5, 0, 0.54}, R * rot(0.2, Vec3::UnitX())), box(0.5, 0.5, 0.5),
                         at({0, 0, 0}), c);
   ASSERT_GE(n, 1);
   double deepest = -1;
@@ -101,9 +83,9 @@ TEST(Narrowphase, CapsuleAcrossACrateEdgeFindsTheDeepInteriorPoint) {
 
 TEST(Narrowphase, ParallelCapsulesGiveTwoPointsAndCrossedOne) {
   ContactPoint c[4];
-  EXPECT_EQ(collide(capsule(0.05, 0.3), at({0, 0, 0}), capsule(0.05, 0.3), at({0.08, 0, 0.1}), c), 2);
+  EXPECT_EQ(collide(capsule_shape(0.05, 0.3), at({0, 0, 0}), capsule_shape(0.05, 0.3), at({0.08, 0, 0.1}), c), 2);
   EXPECT_NEAR(c[0].depth, 0.02, 1e-9);
-  ASSERT_EQ(collide(capsule(0.05, 0.3), at({0, 0, 0}), capsule(0.05, 0.3),
+  ASSERT_EQ(collide(capsule_shape(0.05, 0.3), at({0, 0, 0}), capsule_shape(0.05, 0.3),
                     at({0.09, 0, 0}, rot(M_PI / 2, Vec3::UnitX())), c),
             1);
   EXPECT_NEAR(c[0].depth, 0.01, 1e-9);
@@ -122,7 +104,7 @@ TEST(Narrowphase, BoxRestingFlatOnBoxOrPlaneGivesFourPointsOfTheRightDepth) {
       EXPECT_TRUE(c[i].normal.isApprox(Vec3::UnitZ(), 1e-9));
     }
   }
-  ASSERT_EQ(collide(box(0.1, 0.2, 0.3), at({0, 0, 0.29}, rot(0.7, Vec3::UnitZ())), plane(), at({0, 0, 0}), c), 4);
+  ASSERT_EQ(collide(box(0.1, 0.2, 0.3), at({0, 0, 0.29}, rot(0.7, Vec3::UnitZ())), plane_shape(), at({0, 0, 0}), c), 4);
   for (int i = 0; i < 4; ++i) EXPECT_NEAR(c[i].depth, 0.01, 1e-12);
 }
 
@@ -141,7 +123,7 @@ TEST(Narrowphase, BoxEdgeOnEdgeGivesOnePointAlongTheCrossAxis) {
 TEST(Narrowphase, SwappingThePairFlipsTheNormalAndKeepsTheDepth) {
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> u(-1, 1);
-  const Shape shapes[] = {sphere(0.2), capsule(0.1, 0.3), box(0.2, 0.3, 0.1)};
+  const Shape shapes[] = {sphere_shape(0.2), capsule_shape(0.1, 0.3), box(0.2, 0.3, 0.1)};
   for (int trial = 0; trial < 300; ++trial) {
     for (const Shape& a : shapes) {
       for (const Shape& b : shapes) {
@@ -163,7 +145,7 @@ TEST(Narrowphase, SwappingThePairFlipsTheNormalAndKeepsTheDepth) {
 TEST(Narrowphase, RandomPosesNeverGiveNanAndNormalsAreUnit) {
   std::mt19937_64 rng(11);
   std::uniform_real_distribution<double> u(-1, 1);
-  const Shape shapes[] = {sphere(0.2), capsule(0.1, 0.3), box(0.2, 0.3, 0.1), plane()};
+  const Shape shapes[] = {sphere_shape(0.2), capsule_shape(0.1, 0.3), box(0.2, 0.3, 0.1), plane_shape()};
   long points = 0;
   for (int trial = 0; trial < 10000; ++trial) {
     const Shape& a = shapes[trial % 3];
@@ -213,10 +195,10 @@ TEST(Broadphase, FindsExactlyTheBruteForceOverlaps) {
 }
 
 TEST(Broadphase, ShapeBoundsContainTheShape) {
-  const Aabb b = shape_aabb(capsule(0.1, 0.5), at({1, 0, 0}, rot(M_PI / 2, Vec3::UnitY())), 0.0);
+  const Aabb b = shape_aabb(capsule_shape(0.1, 0.5), at({1, 0, 0}, rot(M_PI / 2, Vec3::UnitY())), 0.0);
   EXPECT_NEAR(b.hi.x(), 1.6, 1e-12);
   EXPECT_NEAR(b.hi.z(), 0.1, 1e-12);
-  const Aabb p = shape_aabb(plane(), at({0, 0, 0}), 0.0);
+  const Aabb p = shape_aabb(plane_shape(), at({0, 0, 0}), 0.0);
   EXPECT_LT(p.lo.x(), -1e10);
 }
 
@@ -233,12 +215,12 @@ TEST(Narrowphase, ClosedFormCasesAreInvariantUnderRigidMotionsOfTheScene) {
     Vec3 normal;
   };
   const Case cases[] = {
-      {sphere(0.5), at({0, 0, 0}), sphere(0.3), at({0.7, 0, 0}), 1, 0.1, Vec3::UnitX()},
-      {sphere(0.2), at({0, 0, 0.5}), capsule(0.1, 0.5), at({0, 0.25, 0.5}, rot(M_PI / 2, Vec3::UnitY())), 1, 0.05,
+      {sphere_shape(0.5), at({0, 0, 0}), sphere_shape(0.3), at({0.7, 0, 0}), 1, 0.1, Vec3::UnitX()},
+      {sphere_shape(0.2), at({0, 0, 0.5}), capsule_shape(0.1, 0.5), at({0, 0.25, 0.5}, rot(M_PI / 2, Vec3::UnitY())), 1, 0.05,
        Vec3::UnitY()},
-      {capsule(0.1, 0.4), at({0, 0, 0}), capsule(0.1, 0.4), at({0, 0.15, 0}), 2, 0.05, Vec3::UnitY()},
-      {box(1, 1, 0.5), at({0, 0, 0}), sphere(0.25), at({0.2, -0.1, 0.7}), 1, 0.05, Vec3::UnitZ()},
-      {box(1, 1, 0.5), at({0, 0, 0}), capsule(0.1, 0.3), at({0, 0, 0.58}, rot(M_PI / 2, Vec3::UnitX())), 2, 0.02,
+      {capsule_shape(0.1, 0.4), at({0, 0, 0}), capsule_shape(0.1, 0.4), at({0, 0.15, 0}), 2, 0.05, Vec3::UnitY()},
+      {box(1, 1, 0.5), at({0, 0, 0}), sphere_shape(0.25), at({0.2, -0.1, 0.7}), 1, 0.05, Vec3::UnitZ()},
+      {box(1, 1, 0.5), at({0, 0, 0}), capsule_shape(0.1, 0.3), at({0, 0, 0.58}, rot(M_PI / 2, Vec3::UnitX())), 2, 0.02,
        Vec3::UnitZ()},
       {box(1, 1, 0.5), at({0, 0, 0}), box(0.3, 0.2, 0.1), at({0.1, 0.1, 0.59}), 4, 0.01, Vec3::UnitZ()},
   };

@@ -15,16 +15,6 @@ int add_floor(Model& m) {
   g.shape.type = ShapeType::Plane;
   return m.add_geom(g);
 }
-int add_sphere(Model& m, const Vec3& p, double r, double mass) {
-  const int b = m.add_body(make_body("ball", 0, JointType::Free, at(p), mass, Vec3::Zero(),
-                                     Mat3::Identity() * (0.4 * mass * r * r)));
-  Geom g;
-  g.body = b;
-  g.shape.type = ShapeType::Sphere;
-  g.shape.radius = r;
-  m.add_geom(g);
-  return b;
-}
 }  // namespace
 
 // Semi-implicit Euler from rest covers g dt^2 n(n+1)/2 in n steps. Dropping the ball from that height
@@ -37,7 +27,7 @@ TEST(ContactEvents, DroppedBallGivesOneBeginAndOneHitWithTheArrivalSpeed) {
   const double r = 0.1, mass = 2.0, g = 9.81;
   const int N = 76;
   const double h0 = g * m.dt * m.dt * N * (N + 1) / 2 + 1e-7;  // ~0.498 m
-  const int ball = add_sphere(m, {0, 0, r + h0}, r, mass);
+  const int ball = add_free_sphere(m, {0, 0, r + h0}, r, mass);
   m.finalize();
   Data d = make_data(m);
   int begins = 0, hits = 0, ends = 0;
@@ -128,8 +118,8 @@ TEST(ContactEvents, ApproachSpeedOfTwoMovingBodiesIsTheirRelativeNormalSpeed) {
   Model m;
   m.gravity.setZero();
   const double r = 0.1;
-  const int a = add_sphere(m, {-0.3, 0.0, 1.0}, r, 1.0);
-  const int b = add_sphere(m, {0.3, 0.08, 1.0}, r, 3.0);
+  const int a = add_free_sphere(m, {-0.3, 0.0, 1.0}, r, 1.0);
+  const int b = add_free_sphere(m, {0.3, 0.08, 1.0}, r, 3.0);
   m.finalize();
   Data d = make_data(m);
   const Vec3 va(1.2, 0.3, 0.0), vb(-0.5, 0.1, 0.2);
@@ -159,7 +149,7 @@ TEST(ContactEvents, ApproachSpeedOfTwoMovingBodiesIsTheirRelativeNormalSpeed) {
 TEST(ContactEvents, HitThresholdIsSettable) {
   Model m;
   add_floor(m);
-  add_sphere(m, {0, 0, 0.1 + 0.05}, 0.1, 1.0);  // lands at ~1 m/s
+  add_free_sphere(m, {0, 0, 0.1 + 0.05}, 0.1, 1.0);  // lands at ~1 m/s
   m.hit_event_threshold = 5.0;
   m.finalize();
   Data d = make_data(m);

@@ -35,16 +35,6 @@ int add_free_box(Model& m, const Pose& X, const Vec3& he, double mass, double mu
   m.add_geom(g);
   return b;
 }
-int add_free_sphere(Model& m, const Vec3& p, double r, double mass) {
-  int b = m.add_body(make_body("ball", 0, JointType::Free, at(p), mass, Vec3::Zero(),
-                               Mat3::Identity() * (0.4 * mass * r * r)));
-  Geom g;
-  g.body = b;
-  g.shape.type = ShapeType::Sphere;
-  g.shape.radius = r;
-  m.add_geom(g);
-  return b;
-}
 }  // namespace
 
 TEST(Contact, BoxRestingOnCrateTopCreepsLessThan1mmIn10s) {

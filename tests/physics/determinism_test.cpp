@@ -33,40 +33,8 @@ using namespace eng::physics;
 using namespace eng::physics::test;
 
 namespace {
-// humanoid tree standing on a floor plane with capsule limbs, some limits, damping
-Model scene() {
-  Model m = humanoid_tree();
-  for (size_t i = 1; i < m.bodies.size(); ++i) {
-    Body& b = m.bodies[i];
-    b.damping = 0.5;
-    b.armature = 0.01;
-    if (b.joint == JointType::Hinge) {
-      b.limited = true;
-      b.lower = -1.0;
-      b.upper = 1.0;
-    }
-    if (b.joint == JointType::Ball) b.swing_limit = 0.8, b.twist_limit = 0.5;
-    Geom g;
-    g.body = static_cast<int>(i);
-    g.shape.type = ShapeType::Capsule;
-    g.shape.radius = 0.05;
-    g.shape.half_length = 0.1;
-    g.local = at({0, 0, -0.15});
-    m.add_geom(g);
-  }
-  Geom floor;
-  floor.body = 0;
-  floor.shape.type = ShapeType::Plane;
-  m.add_geom(floor);
-  Geom crate;
-  crate.body = 0;
-  crate.shape.type = ShapeType::Box;
-  crate.shape.half_extents = Vec3(0.3, 0.3, 0.3);
-  crate.local = at({0.5, 0, 0.3});
-  m.add_geom(crate);
-  m.finalize();
-  return m;
-}
+// The step's every stage (contacts on a floor and a crate, limits, damping), without joint springs.
+Model scene() { return humanoid_on_floor(0.0); }
 void run(const Model& m, Data& d, int n) {
   for (int i = 0; i < n; ++i) {
     clear_applied(d);

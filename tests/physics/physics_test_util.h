@@ -23,6 +23,32 @@ inline Mat3 rod_inertia_z(double m, double len, double r = 0.02) {  // slender r
 
 inline Pose at(const Vec3& p) { return Pose{Mat3::Identity(), p}; }
 
+// Shapes for the collision and ray tests.
+inline Shape sphere_shape(double r) {
+  Shape s;
+  s.type = ShapeType::Sphere;
+  s.radius = r;
+  return s;
+}
+inline Shape capsule_shape(double r, double half_length) {
+  Shape s;
+  s.type = ShapeType::Capsule;
+  s.radius = r;
+  s.half_length = half_length;
+  return s;
+}
+inline Shape box_shape(const Vec3& half_extents) {
+  Shape s;
+  s.type = ShapeType::Box;
+  s.half_extents = half_extents;
+  return s;
+}
+inline Shape plane_shape() {
+  Shape s;
+  s.type = ShapeType::Plane;
+  return s;
+}
+
 inline Body make_body(const char* name, int parent, JointType j, const Pose& X, double mass, const Vec3& com,
                       const Mat3& I, const Vec3& axis = Vec3::UnitY()) {
   Body b;
@@ -34,6 +60,18 @@ inline Body make_body(const char* name, int parent, JointType j, const Pose& X, 
   b.com = com;
   b.inertia = I;
   b.axis = axis;
+  return b;
+}
+
+// A free solid sphere (uniform density: I = 2/5 m r^2) at p with its geom; returns the body.
+inline int add_free_sphere(Model& m, const Vec3& p, double r, double mass) {
+  const int b = m.add_body(make_body("ball", 0, JointType::Free, at(p), mass, Vec3::Zero(),
+                                     Mat3::Identity() * (0.4 * mass * r * r)));
+  Geom g;
+  g.body = b;
+  g.shape.type = ShapeType::Sphere;
+  g.shape.radius = r;
+  m.add_geom(g);
   return b;
 }
 
@@ -59,15 +97,15 @@ inline Model humanoid_tree() {
   return m;
 }
 
-// humanoid_tree() with damping, armature, stiffness, limits, capsule limbs, a floor plane and a crate:
-// exercises every stage of the step (contacts, limits, implicit terms).
-inline Model humanoid_on_floor() {
+// humanoid_tree() with damping, armature, stiffness (per DoF; 0: none), limits, capsule limbs, a floor plane and a
+// crate: exercises every stage of the step (contacts, limits, implicit terms).
+inline Model humanoid_on_floor(double stiffness = 20.0) {
   Model m = humanoid_tree();
   for (size_t i = 1; i < m.bodies.size(); ++i) {
     Body& b = m.bodies[i];
     b.damping = 0.5;
     b.armature = 0.01;
-    if (b.joint != JointType::Free) b.stiffness = 20.0;
+    if (b.joint != JointType::Free) b.stiffness = stiffness;
     if (b.joint == JointType::Hinge) {
       b.limited = true;
       b.lower = -1.0;

@@ -13,35 +13,15 @@
 
 using namespace eng::physics;
 using eng::physics::test::at;
+using eng::physics::test::box_shape;
+using eng::physics::test::capsule_shape;
+using eng::physics::test::plane_shape;
+using eng::physics::test::sphere_shape;
 using eng::physics::test::box_inertia;
 using eng::physics::test::make_body;
 
 namespace {
 
-Shape sphere(double r) {
-  Shape s;
-  s.type = ShapeType::Sphere;
-  s.radius = r;
-  return s;
-}
-Shape capsule(double r, double hl) {
-  Shape s;
-  s.type = ShapeType::Capsule;
-  s.radius = r;
-  s.half_length = hl;
-  return s;
-}
-Shape box(const Vec3& he) {
-  Shape s;
-  s.type = ShapeType::Box;
-  s.half_extents = he;
-  return s;
-}
-Shape plane() {
-  Shape s;
-  s.type = ShapeType::Plane;
-  return s;
-}
 Mat3 rot(double angle, const Vec3& axis) { return Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix(); }
 
 Geom geom(const Shape& s, const Pose& local, int body = 0, uint32_t group = 1) {
@@ -75,7 +55,7 @@ double sphere_distance(const Vec3& o, const Vec3& d, const Vec3& c, double r) {
 TEST(Raycast, SphereHitIsTheNearRootOfTheQuadraticWithTheOutwardNormal) {
   Scene s;
   const Vec3 c(1.0, 2.0, 0.5);
-  s.m.add_geom(geom(sphere(0.4), at(c)));
+  s.m.add_geom(geom(sphere_shape(0.4), at(c)));
   s.ready();
   const Vec3 o(-2.0, 1.8, 0.6);
   const Vec3 dir = (c + Vec3(0.0, 0.1, -0.05) - o);  // not unit: the cast normalises it
@@ -96,7 +76,7 @@ TEST(Raycast, BoxFacesFromAllSixSidesAreTheSlabDistancesWithTheFaceNormal) {
   const Vec3 c(0.3, -0.2, 1.0), he(0.5, 0.3, 0.2);
   for (const Mat3& R : {Mat3(Mat3::Identity()), rot(0.7, Vec3(1, 2, 3))}) {
     Scene s;
-    s.m.add_geom(geom(box(he), Pose{R, c}));
+    s.m.add_geom(geom(box_shape(he), Pose{R, c}));
     s.ready();
     for (int axis = 0; axis < 3; ++axis) {
       for (double side : {-1.0, 1.0}) {
@@ -117,7 +97,7 @@ TEST(Raycast, BoxFacesFromAllSixSidesAreTheSlabDistancesWithTheFaceNormal) {
 
 TEST(Raycast, BoxObliqueAndEdgeOnHitsMatchTheHandWorkedSlabs) {
   Scene s;
-  s.m.add_geom(geom(box(Vec3(0.5, 0.5, 0.5)), at(Vec3::Zero())));
+  s.m.add_geom(geom(box_shape(Vec3(0.5, 0.5, 0.5)), at(Vec3::Zero())));
   s.ready();
   // oblique onto the -x face: x reaches -0.5 after 1.5 along x, where y = -1 + 0.75 = -0.25 (inside the face)
   RayHit h = raycast(s.m, s.d, Vec3(-2.0, -1.0, 0.1), Vec3(1.0, 0.5, 0.0), 10.0);
@@ -145,7 +125,7 @@ TEST(Raycast, CapsuleSideAndCapHitsMatchTheCylinderAndSphereRoots) {
   Scene s;
   const Vec3 c(0.0, 0.0, 1.0);
   const Mat3 R = rot(M_PI / 2, Vec3::UnitY());  // local Z (the capsule's axis) along world +X
-  s.m.add_geom(geom(capsule(0.1, 0.3), Pose{R, c}));
+  s.m.add_geom(geom(capsule_shape(0.1, 0.3), Pose{R, c}));
   s.ready();
   // side: across the axis at x = 0.2 (within the straight part |x| <= 0.3)
   RayHit h = raycast(s.m, s.d, Vec3(0.2, -2.0, 1.0), Vec3::UnitY(), 10.0);
@@ -175,7 +155,7 @@ TEST(Raycast, CapsuleSideAndCapHitsMatchTheCylinderAndSphereRoots) {
 
 TEST(Raycast, PlaneHitIsHeightOverDescentRateAndUpwardRaysMiss) {
   Scene s;
-  s.m.add_geom(geom(plane(), at(Vec3(0, 0, 0.25))));
+  s.m.add_geom(geom(plane_shape(), at(Vec3(0, 0, 0.25))));
   s.ready();
   RayHit h = raycast(s.m, s.d, Vec3(1.0, 2.0, 3.25), Vec3(0.6, 0.0, -0.8), 100.0);
   ASSERT_TRUE(h.hit);
@@ -188,9 +168,9 @@ TEST(Raycast, PlaneHitIsHeightOverDescentRateAndUpwardRaysMiss) {
 
 TEST(Raycast, ARayPassingBesideEveryShapeMisses) {
   Scene s;
-  s.m.add_geom(geom(sphere(0.5), at(Vec3(0, 0, 0))));
-  s.m.add_geom(geom(box(Vec3(0.2, 0.2, 0.2)), at(Vec3(3, 0, 0))));
-  s.m.add_geom(geom(capsule(0.1, 0.5), at(Vec3(6, 0, 0))));
+  s.m.add_geom(geom(sphere_shape(0.5), at(Vec3(0, 0, 0))));
+  s.m.add_geom(geom(box_shape(Vec3(0.2, 0.2, 0.2)), at(Vec3(3, 0, 0))));
+  s.m.add_geom(geom(capsule_shape(0.1, 0.5), at(Vec3(6, 0, 0))));
   s.ready();
   EXPECT_FALSE(raycast(s.m, s.d, Vec3(-5, 0.6, 0), Vec3::UnitX(), 100.0).hit);
   EXPECT_TRUE(raycast(s.m, s.d, Vec3(-5, 0.49, 0), Vec3::UnitX(), 100.0).hit);
@@ -199,7 +179,7 @@ TEST(Raycast, ARayPassingBesideEveryShapeMisses) {
 
 TEST(Raycast, MaxDistanceCutsOffHitsBeyondIt) {
   Scene s;
-  s.m.add_geom(geom(sphere(0.5), at(Vec3(3, 0, 0))));
+  s.m.add_geom(geom(sphere_shape(0.5), at(Vec3(3, 0, 0))));
   s.ready();
   EXPECT_FALSE(raycast(s.m, s.d, Vec3::Zero(), Vec3::UnitX(), 2.49).hit);
   const RayHit h = raycast(s.m, s.d, Vec3::Zero(), Vec3::UnitX(), 2.51);
@@ -209,10 +189,10 @@ TEST(Raycast, MaxDistanceCutsOffHitsBeyondIt) {
 
 TEST(Raycast, OriginInsideAShapeHitsItAtDistanceZeroFacingBackAlongTheRay) {
   Scene s;
-  s.m.add_geom(geom(sphere(0.5), at(Vec3(0, 0, 0))));
-  s.m.add_geom(geom(box(Vec3(0.5, 0.5, 0.5)), at(Vec3(3, 0, 0))));
-  s.m.add_geom(geom(capsule(0.2, 0.5), at(Vec3(6, 0, 0))));
-  s.m.add_geom(geom(plane(), at(Vec3(0, 0, -10))));
+  s.m.add_geom(geom(sphere_shape(0.5), at(Vec3(0, 0, 0))));
+  s.m.add_geom(geom(box_shape(Vec3(0.5, 0.5, 0.5)), at(Vec3(3, 0, 0))));
+  s.m.add_geom(geom(capsule_shape(0.2, 0.5), at(Vec3(6, 0, 0))));
+  s.m.add_geom(geom(plane_shape(), at(Vec3(0, 0, -10))));
   s.ready();
   const Vec3 dir = Vec3(1, 1, 0).normalized();
   for (const auto& [o, g] : {std::pair{Vec3(0.1, 0, 0), 0}, std::pair{Vec3(3.4, 0, 0.4), 1},
@@ -231,8 +211,8 @@ TEST(Raycast, TheClosestOfTwoBodiesWinsWhateverTheirOrder) {
   const Mat3 I = box_inertia(1.0, Vec3(0.1, 0.1, 0.1));
   const int far = m.add_body(make_body("far", 0, JointType::Free, at({4, 0, 1}), 1.0, Vec3::Zero(), I));
   const int near = m.add_body(make_body("near", 0, JointType::Free, at({2, 0, 1}), 1.0, Vec3::Zero(), I));
-  m.add_geom(geom(sphere(0.3), Pose{}, far));
-  m.add_geom(geom(box(Vec3(0.2, 0.2, 0.2)), Pose{}, near));
+  m.add_geom(geom(sphere_shape(0.3), Pose{}, far));
+  m.add_geom(geom(box_shape(Vec3(0.2, 0.2, 0.2)), Pose{}, near));
   m.finalize();
   Data d = make_data(m);
   forward_kinematics(m, d);
@@ -253,9 +233,9 @@ TEST(Raycast, TheFilterSkipsABodyAnArticulationOrAGroup) {
   const int a = m.add_body(make_body("a", 0, JointType::Free, at({2, 0, 1}), 1.0, Vec3::Zero(), I));
   const int a_child = m.add_body(make_body("a_child", a, JointType::Hinge, at({1, 0, 0}), 1.0, Vec3::Zero(), I));
   const int b = m.add_body(make_body("b", 0, JointType::Free, at({5, 0, 1}), 1.0, Vec3::Zero(), I));
-  m.add_geom(geom(sphere(0.2), Pose{}, a, 1u));
-  m.add_geom(geom(sphere(0.2), Pose{}, a_child, 1u));
-  m.add_geom(geom(sphere(0.2), Pose{}, b, 2u));
+  m.add_geom(geom(sphere_shape(0.2), Pose{}, a, 1u));
+  m.add_geom(geom(sphere_shape(0.2), Pose{}, a_child, 1u));
+  m.add_geom(geom(sphere_shape(0.2), Pose{}, b, 2u));
   m.finalize();
   Data d = make_data(m);
   forward_kinematics(m, d);
@@ -285,7 +265,7 @@ TEST(Raycast, ALinkRotatedByItsJointIsHitWhereItIsPosedNotWhereItRests) {
   const Mat3 I = box_inertia(1.0, Vec3(0.3, 0.1, 0.1));
   const int base = m.add_body(make_body("base", 0, JointType::Fixed, at({0, 0, 1}), 1.0, Vec3::Zero(), I));
   const int arm = m.add_body(make_body("arm", base, JointType::Hinge, Pose{}, 1.0, Vec3(1, 0, 0), I, Vec3::UnitZ()));
-  m.add_geom(geom(box(Vec3(0.3, 0.1, 0.1)), at({1, 0, 0}), arm));
+  m.add_geom(geom(box_shape(Vec3(0.3, 0.1, 0.1)), at({1, 0, 0}), arm));
   m.finalize();
   Data d = make_data(m);
   d.q[m.bodies[arm].q_index] = M_PI / 2;
