@@ -57,6 +57,12 @@ struct BoxerMetrics {
   int most_steps_in_recovery = 0;           // the longest multi-step recovery
   int late_landings = 0;  // balance steps set down by time, their sole not on a top (BalanceStepTuning::late)
   double max_com_speed = 0.0;
+  // The legs' clearance: a boxer's own geoms do not collide (self_collide off), so a swing through the stance leg
+  // would pass through it with nothing to stop it. The deepest overlap of a left-leg geom (thigh, shank, foot) with a
+  // right-leg one, upright (m), and the time spent overlapping more than kLegsOverlap (s).
+  static constexpr double kLegsOverlap = 0.01;  // m
+  double legs_overlap_max = 0.0, legs_overlap_s = 0.0;
+  std::vector<int> leg_geoms[2];  // the model's geoms of each leg (found on the first sample)
   // How far each foot's sole centre slid over the ground while planted, upright (m): per planting (the foot on the
   // ground, no step carrying it) the distance from where it was set down to where it is or lifted, summed over the
   // plantings (net, so the contact's sub-millimetre jitter does not add up). The graph walks' rear foot slid

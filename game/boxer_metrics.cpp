@@ -5,6 +5,7 @@
 #include "engine/control/servo/orientation_error.h"
 #include "engine/control/servo/world_pose.h"
 #include "engine/physics/dynamics.h"
+#include "engine/physics/overlap.h"
 #include "game/boxer.h"
 
 namespace boxing {
@@ -14,6 +15,27 @@ using eng::control::pose_fk;
 void boxer_sense_contacts(const eng::physics::Data& d, Boxer& b) {
   eng::control::find_foot_contacts(d.contacts, b.bodies.body, b.bones, b.settings.tuning.contact, b.ctl.contacts);
 }
+
+namespace {
+
+// BoxerMetrics::legs_overlap_*: every left-leg geom against every right-leg one (3 x 3 at most).
+void measure_legs_overlap(const eng::physics::Model& m, const eng::physics::Data& d, const eng::anim::Skeleton& skel,
+                          Boxer& b, double dt) {
+  BoxerMetrics& mt = b.metrics;
+  if (mt.leg_geoms[0].empty())
+    for (int k = 0; k < 2; ++k)
+      for (const char* bone : {"thigh", "shank", "foot"}) {
+        const int i = skel.find(std::string(bone) + (k == 0 ? "_l" : "_r"));
+        if (i < 0) continue;
+        for (size_t g = 0; g < m.geoms.size(); ++g)
+          if (m.geoms[g].body == b.bodies.body[i]) mt.leg_geoms[k].push_back(static_cast<int>(g));
+      }
+  const double deepest = eng::physics::deepest_overlap(m, d, mt.leg_geoms[0], mt.leg_geoms[1]);
+  mt.legs_overlap_max = std::max(mt.legs_overlap_max, deepest);
+  if (deepest > BoxerMetrics::kLegsOverlap) mt.legs_overlap_s += dt;
+}
+
+}  // namespace
 
 void boxer_measure(const eng::physics::Model& m, const eng::physics::Data& d, const eng::assets::CharacterDesc& desc,
                    Boxer& b, double dt) {
@@ -79,6 +101,7 @@ void boxer_measure(const eng::physics::Model& m, const eng::physics::Data& d, co
   const Eigen::Vector3d com = eng::physics::subtree_com(m, d, pelvis);
   const Eigen::Vector3d vcom = eng::physics::spatial_momentum(m, d, pelvis).tail<3>() / b.control_body.total_mass;
   mt.max_com_speed = std::max(mt.max_com_speed, vcom.norm());
+  if (!mt.fell && !b.limp) measure_legs_overlap(m, d, skel, b, dt);
 
 
   {  // diagnostic trace

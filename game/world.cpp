@@ -441,6 +441,8 @@ nlohmann::json world_report(const World& w) {
                       {"return_steps", m.return_steps},
                       {"most_steps_in_recovery", m.most_steps_in_recovery},
                       {"late_landings", m.late_landings},
+                      {"legs_overlap_max_m", m.legs_overlap_max},
+                      {"legs_overlap_s", m.legs_overlap_s},
                       {"fell_pelvis_m", {m.fell_pelvis.x(), m.fell_pelvis.y(), m.fell_pelvis.z()}},
                       {"fell_reason", m.fell_reason},
                       {"time_upright_s", m.time_upright},

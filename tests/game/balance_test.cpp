@@ -461,11 +461,14 @@ TEST(FootSlide, TheCrossDrillsRearFootStaysPlantedWithTheAnkleLimitsInThePlan) {
   EXPECT_GT(unplanned.first, 5.0 * planned.first);
 }
 
-TEST(BalanceSteps, AStandingBoxerTakesNone) {
-  // Standing in guard for 10 s: the capture point never leaves the soles, no step is taken for nothing.
+TEST(BalanceSteps, AStandingBoxerTakesNoneAndItsLegsNeverTouch) {
+  // Standing in guard for 10 s: the capture point never leaves the soles, no step is taken for nothing; the guard's
+  // legs (which do not collide with each other: BoxerMetrics::legs_overlap_*) stay apart.
   const auto m = run({"--scenario", "stand", "--seed", "4", "--stepping", "on"}, 10.0);
   EXPECT_FALSE(m.fell);
   EXPECT_EQ(m.balance_steps, 0);
+  EXPECT_EQ(m.legs_overlap_max, 0.0);
+  EXPECT_EQ(m.legs_overlap_s, 0.0);
 }
 
 }  // namespace
