@@ -59,7 +59,7 @@ struct BoxerMetrics {
   double max_com_speed = 0.0;
   // The legs' clearance: a boxer's own geoms do not collide (self_collide off), so a swing through the stance leg
   // would pass through it with nothing to stop it. The deepest overlap of a left-leg geom (thigh, shank, foot) with a
-  // right-leg one, upright (m), and the time spent overlapping more than kLegsOverlap (s).
+  // right-leg one on its feet (guard or stunned; m), and the time spent overlapping more than kLegsOverlap (s).
   static constexpr double kLegsOverlap = 0.01;  // m
   double legs_overlap_max = 0.0, legs_overlap_s = 0.0;
   std::vector<int> leg_geoms[2];  // the model's geoms of each leg (found on the first sample)

@@ -101,7 +101,9 @@ void boxer_measure(const eng::physics::Model& m, const eng::physics::Data& d, co
   const Eigen::Vector3d com = eng::physics::subtree_com(m, d, pelvis);
   const Eigen::Vector3d vcom = eng::physics::spatial_momentum(m, d, pelvis).tail<3>() / b.control_body.total_mass;
   mt.max_com_speed = std::max(mt.max_com_speed, vcom.norm());
-  if (!mt.fell && !b.limp) measure_legs_overlap(m, d, skel, b, dt);
+  // On its feet (guard or stunned: a match boxer after a get-up too; not falling, down or in the stand-up's kneel).
+  const BoxerState state = b.ctl.state.state;
+  if (!b.limp && (state == BoxerState::Guard || state == BoxerState::Stunned)) measure_legs_overlap(m, d, skel, b, dt);
 
 
   {  // diagnostic trace
