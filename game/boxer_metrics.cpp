@@ -18,18 +18,16 @@ void boxer_sense_contacts(const eng::physics::Data& d, Boxer& b) {
 
 namespace {
 
-// BoxerMetrics::legs_overlap_*: every left-leg geom against every right-leg one (3 x 3 at most).
-void measure_legs_overlap(const eng::physics::Model& m, const eng::physics::Data& d, const eng::anim::Skeleton& skel,
-                          Boxer& b, double dt) {
+// BoxerMetrics::legs_overlap_*: every left-leg geom against every right-leg one (3 x 3 at most), the legs' bones from
+// b.bones and their geoms from the character's per-bone geom ranges (listed on the first sample).
+void measure_legs_overlap(const eng::physics::Model& m, const eng::physics::Data& d, Boxer& b, double dt) {
   BoxerMetrics& mt = b.metrics;
   if (mt.leg_geoms[0].empty())
-    for (int k = 0; k < 2; ++k)
-      for (const char* bone : {"thigh", "shank", "foot"}) {
-        const int i = skel.find(std::string(bone) + (k == 0 ? "_l" : "_r"));
-        if (i < 0) continue;
-        for (size_t g = 0; g < m.geoms.size(); ++g)
-          if (m.geoms[g].body == b.bodies.body[i]) mt.leg_geoms[k].push_back(static_cast<int>(g));
-      }
+    for (int k = 0; k < 2; ++k) {
+      const eng::control::LegBones& leg = b.bones.leg[k];
+      for (int i : {leg.thigh, leg.shank, leg.foot})
+        for (int g = 0; i >= 0 && g < b.bodies.geom_count[i]; ++g) mt.leg_geoms[k].push_back(b.bodies.first_geom[i] + g);
+    }
   const double deepest = eng::physics::deepest_overlap(m, d, mt.leg_geoms[0], mt.leg_geoms[1]);
   mt.legs_overlap_max = std::max(mt.legs_overlap_max, deepest);
   if (deepest > BoxerMetrics::kLegsOverlap) mt.legs_overlap_s += dt;
@@ -103,7 +101,7 @@ void boxer_measure(const eng::physics::Model& m, const eng::physics::Data& d, co
   mt.max_com_speed = std::max(mt.max_com_speed, vcom.norm());
   // On its feet (guard or stunned: a match boxer after a get-up too; not falling, down or in the stand-up's kneel).
   const BoxerState state = b.ctl.state.state;
-  if (!b.limp && (state == BoxerState::Guard || state == BoxerState::Stunned)) measure_legs_overlap(m, d, skel, b, dt);
+  if (!b.limp && (state == BoxerState::Guard || state == BoxerState::Stunned)) measure_legs_overlap(m, d, b, dt);
 
 
   {  // diagnostic trace
