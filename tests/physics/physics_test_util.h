@@ -69,8 +69,7 @@ inline int add_free_sphere(Model& m, const Vec3& p, double r, double mass) {
                                      Mat3::Identity() * (0.4 * mass * r * r)));
   Geom g;
   g.body = b;
-  g.shape.type = ShapeType::Sphere;
-  g.shape.radius = r;
+  g.shape = sphere_shape(r);
   m.add_geom(g);
   return b;
 }
