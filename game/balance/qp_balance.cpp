@@ -25,6 +25,43 @@ using eng::control::pose_fk;
 
 double stance_drop(const QpBalance&, const Boxer& b) { return b.settings.tuning.qp.stance_drop; }
 
+namespace {
+// The mean of a body's contact points in the plan (floor x, y): a foot's middle as it stands; false when it has none.
+bool contact_centre(const std::vector<eng::control::QpContact>& contacts, int body, Eigen::Vector2d& centre) {
+  Eigen::Vector2d sum = Eigen::Vector2d::Zero();
+  int count = 0;
+  for (const auto& c : contacts)
+    if (c.body == body) sum += c.point.head<2>(), ++count;
+  if (count > 0) centre = sum / count;
+  return count > 0;
+}
+
+// The com target once the return step's hold on it ends (its touch-down, or its weight shift given up): from where the
+// hold left it back toward the clip's at `speed`, for at most `time` (a clip's target moving on is not chased). A
+// balance step's swing (the LIP's fall) ends it. The state is the balance steps' (BalanceStepState::settling), so a
+// fall or the referee's reset, which start those over, end it too.
+void settle_after_return(eng::control::BalanceStepState& st, bool holding, bool balance_swing, double speed,
+                         double time, double dt, Eigen::Vector2d& target, Eigen::Vector3d& v_d) {
+  if (holding) {
+    st.settling = true;
+    st.settle_target = target;
+    st.settle_elapsed = 0.0;
+    return;
+  }
+  if (!st.settling) return;
+  st.settle_elapsed += dt;
+  const Eigen::Vector2d to = target - st.settle_target;
+  const double most = speed * dt;
+  if (balance_swing || to.norm() <= most || st.settle_elapsed >= time) {
+    st.settling = false;
+    return;
+  }
+  st.settle_target += to * (most / to.norm());
+  target = st.settle_target;
+  v_d.setZero();
+}
+}  // namespace
+
 // The balance QP's inputs for one boxer (balance_qp.h), solved, and its joint torques written to d.tau.
 //  * Contacts: the touching contact points (gap < BalanceQpTuning::touch_gap) with the crates, from the last step: of the feet
 //    the clip plants and of any other link (a knee, a hand).
@@ -165,6 +202,10 @@ void actuate(QpBalance& q, BalanceTick& tick) {
         eng::control::convex_hull_2d_in_place(q.pts, q.hull);
         target = eng::control::clamp_to_polygon(q.hull, target, tq.shift_margin);
         if (b.ctl.balance_steps.shifting == k) {
+          // The return step's goes over the foot's middle: shift_margin inside its hull is 1 cm inside its side (the
+          // margin moves the hull's corners toward its centre), the lift waits for the capture point
+          // BalanceStepTuning::return_shift_margin (4 cm) inside it, and 1 in 200 of Yin's pushes lifted a return.
+          contact_centre(in.contacts, other, target);
           if (!q.return_shift) q.return_shift_target = com_a.head<2>();
           const Eigen::Vector2d to = target - q.return_shift_target;
           const double most = tq.return_shift_speed * dt;
@@ -174,6 +215,17 @@ void actuate(QpBalance& q, BalanceTick& tick) {
         }
       }
       q.return_shift = return_shift;
+      // The return step's swing: the com held over the stance foot's middle, and no clip velocity fed forward (the
+      // clip's com over its feet, differenced from a desired pose whose foot the step swings, read 0.9 m/s and the com
+      // ran off the stance foot's side). After the touch-down the target comes back to the clip's slowly: set there
+      // at once, 0.3 m away, the com ran on past the front foot at 0.4 m/s.
+      const eng::control::BalanceStep& step = b.ctl.balance_steps.step;
+      if (step.active && step.returning) {
+        contact_centre(in.contacts, b.bodies.body[feet[1 - step.foot]], target);
+        v_d.setZero();
+      }
+      settle_after_return(b.ctl.balance_steps, return_shift || (step.active && step.returning),
+                          step.active && !step.returning, tq.return_shift_speed, tq.return_settle_time, dt, target, v_d);
       e.head<2>() = com_a.head<2>() - target;
     }
     const double kp = tq.com_omega * tq.com_omega, kd = 2.0 * tq.com_omega;
@@ -198,6 +250,19 @@ void actuate(QpBalance& q, BalanceTick& tick) {
     // back at 6 m/s^2 by folding the trunk over the hips (docs/decisions/balance-steps.md, fourth round).
     const eng::control::BalanceStep& bs = b.ctl.balance_steps.step;
     const eng::control::BalanceStepTuning& ts = b.settings.tuning.balance_step;
+    // A balance step's landing below the swing leg's reach: the com's height task aims that much lower, so the stance
+    // knee bends and the foot gets down (BalanceStepTuning::reach_share). A return step's too: sent to the floor
+    // between two crates, 0.22 m below the stance's top, a return hung on a crate's side and the com ran off.
+    auto come_down_to_landing = [&] {
+      const eng::control::LegBones& leg = b.bones.leg[bs.foot];
+      const Eigen::Vector3d &hip = d.x[b.bodies.body[leg.thigh]].p, &knee = d.x[b.bodies.body[leg.shank]].p,
+                            &ankle = d.x[b.bodies.body[leg.foot]].p;
+      const Eigen::Vector3d land = Eigen::Vector3d(bs.to.x(), bs.to.y(), bs.to_top) -
+                                   Eigen::AngleAxisd(bs.yaw, Eigen::Vector3d::UnitZ()) * b.settings.tuning.foot.sole_offset();
+      const double drop = eng::control::step_reach_drop(hip, land, (knee - hip).norm() + (ankle - knee).norm(),
+                                                        ts.reach_share, ts.reach_max_drop);
+      if (drop > 0.0) in.com_acc.z() = std::min(in.com_acc.z(), std::max(-tq.max_com_acc, -kp * drop - kd * vcom.z()));
+    };
     for (int k = 0; k < 2; ++k) {
       // (A carried step, StepTuning::carry, goes on past the clip's touch-down, where the gate lets go: its swing
       // too, up to the quick step's longest; a longer one, slowed to rise onto a higher crate, keeps the com task's
@@ -220,19 +285,9 @@ void actuate(QpBalance& q, BalanceTick& tick) {
       const double beyond = (xi - p).norm(), reach = balance_swing ? assist_reach(m, b) : 0.0;
       p += beyond > reach ? Eigen::Vector2d((xi - p) * (reach / beyond)) : Eigen::Vector2d(xi - p);
       in.com_acc.head<2>() = omega * omega * (com_a.head<2>() - p);
-      // A balance step's landing below the swing leg's reach: the com's height task aims that much lower, so the
-      // stance knee bends and the foot gets down (BalanceStepTuning::reach_share).
-      if (balance_swing && ts.reach_share > 0.0) {
-        const eng::control::LegBones& leg = b.bones.leg[k];
-        const Eigen::Vector3d &hip = d.x[b.bodies.body[leg.thigh]].p, &knee = d.x[b.bodies.body[leg.shank]].p,
-                              &ankle = d.x[b.bodies.body[leg.foot]].p;
-        const Eigen::Vector3d land = Eigen::Vector3d(bs.to.x(), bs.to.y(), bs.to_top) -
-                                     Eigen::AngleAxisd(bs.yaw, Eigen::Vector3d::UnitZ()) * b.settings.tuning.foot.sole_offset();
-        const double drop = eng::control::step_reach_drop(hip, land, (knee - hip).norm() + (ankle - knee).norm(),
-                                                          ts.reach_share, ts.reach_max_drop);
-        if (drop > 0.0) in.com_acc.z() = std::min(in.com_acc.z(), std::max(-tq.max_com_acc, -kp * drop - kd * vcom.z()));
-      }
+      if (balance_swing && ts.reach_share > 0.0) come_down_to_landing();
     }
+    if (bs.active && bs.returning && ts.reach_share > 0.0 && !in.contacts.empty()) come_down_to_landing();
     const ph::Vec6 h = ph::spatial_momentum(m, d, pelvis);
     const Eigen::Vector3d k_com = h.head<3>() - com_a.cross(h.tail<3>());
     in.momentum_rate = -tq.momentum_damping * k_com;

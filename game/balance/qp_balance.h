@@ -41,7 +41,10 @@ struct BalanceQpTuning {
   bool balance_step_relative = true;   // its swing foot's task relative to the pelvis (QpPointTask::ref_body)
   // The return step's weight shift (balance_step.h phase 3): the com target moves over the other foot at most this fast.
   // Set there at once, the com ran 0.4 m/s off the far side of a post-step stance 0.5 m wide and the return fell.
+  // When the return's hold ends (its touch-down, or the shift given up) the target comes back to the clip's as fast,
+  // for at most return_settle_time.
   double return_shift_speed = 0.2;    // m/s
+  double return_settle_time = 2.0;    // s
   double max_com_acc = 6.0;           // m/s^2, the desired com acceleration's bound
   // With a root assist (the match's and the walks' root spring), the com task asks the ground only for the horizontal
   // acceleration its centre of pressure can give: scaled down until that lies cop_margin inside the contacts

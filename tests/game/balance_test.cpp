@@ -10,6 +10,7 @@
 #include <string>
 #include <utility>
 
+#include "game/boxer_stepping.h"
 #include "game/cli.h"
 #include "game/world.h"
 
@@ -459,6 +460,34 @@ TEST(FootSlide, TheCrossDrillsRearFootStaysPlantedWithTheAnkleLimitsInThePlan) {
   EXPECT_LT(planned.first, 0.03);  // (1.2 cm)
   // Unplanned: 16.5 cm, and the boxer fell (at 10 s on this seed before the limits were planned).
   EXPECT_GT(unplanned.first, 5.0 * planned.first);
+}
+
+TEST(BalanceSteps, AStanceTheRecoveryLeftCrossedReturnsToOneTheBoxerCanFightFrom) {
+  // 300 N x 0.2 s to the right, seed 4: the lead foot crosses 0.2 m over in front of the rear one and the recovery
+  // settles there. Yin's third phase, the return step, used to wait for a weight shift it could not finish (its com
+  // target 1 cm inside the rear sole's side, the lift asking for the capture point 4 cm inside): 1 of Yin's 200 pushes
+  // on seeds 1-40 lifted one, and the boxers stood cross-legged. Now the com goes over the rear foot's middle and comes
+  // to rest, the lead foot swings back to its guard place, 0.22 m down onto the floor between two crates (the com
+  // comes down for it), the com is held over the stance foot until the touch-down and then comes back to the clip's
+  // slowly, and the boxer ends in a stance it can fight from.
+  auto o = boxing::parse_cli({"--scenario", "push", "--seed", "4", "--push-dir", "270", "--push-force", "300",
+                              "--push-duration", "0.2", "--push-at", "2", "--stepping", "on"});
+  ASSERT_TRUE(o.ok());
+  auto w = boxing::make_world(*o);
+  ASSERT_TRUE(w.ok()) << w.error();
+  boxing::World& world = **w;
+  bool crossed = false;
+  for (int i = 0; i < int(8.0 / boxing::kPhysicsDt); ++i) {
+    boxing::step_world(world);
+    crossed = crossed || !boxing::stance_can_fight(world.data, world.boxers[0]);
+  }
+  const boxing::BoxerMetrics& m = world.boxers[0].metrics;
+  EXPECT_TRUE(crossed);
+  EXPECT_GE(m.balance_steps, 1);
+  EXPECT_EQ(m.return_steps, 1);
+  EXPECT_EQ(m.late_landings, 0);
+  EXPECT_FALSE(m.fell) << "fell at " << m.fell_at << " s (" << m.fell_reason << ")";
+  EXPECT_TRUE(boxing::stance_can_fight(world.data, world.boxers[0]));
 }
 
 TEST(BalanceSteps, AStandingBoxerTakesNoneAndItsLegsNeverTouch) {

@@ -67,10 +67,13 @@ struct BalanceStepTuning {
   // m, it lifts once the capture point is this far inside the other sole (2 cm: at the stance toe's edge, and the body
   // ran off it; match seed 19 with the stagger) ...
   double return_shift_margin = 0.04;
-  double return_shift_max = 1.0;      // s, ... and is given up when the weight shift takes longer
+  // s, ... and is given up when the weight shift takes longer (1 s: a shift of 0.2-0.3 m at the balance QP's
+  // return_shift_speed was given up before the com got there, and the feet stayed crossed to the end) ...
+  double return_shift_max = 2.5;
   // m/s, ... and the com has come to rest over it (the shift done, not passing through: lifted with the com moving
-  // at 0.35 m/s, the body ran on off the stance foot's edge; match seed 19 with the stagger)
-  double return_lift_speed = 0.15;
+  // at 0.35 m/s, the body ran on off the stance foot's edge; match seed 19 with the stagger; at 0.15 m/s, still
+  // moving toward the stance foot's far side as the shift's target stopped, it ran off during the swing)
+  double return_lift_speed = 0.06;
   // The swing leg lands with at most this share of its length (hip to ankle, knee straight) between its hip and the
   // landing's ankle: for a landing lower than that, the com comes down (the stance knee bends; step_reach_drop, the
   // balance QP's com height task, at most its max_com_acc). Held at the clip's height, the com stayed up (it rose 6 cm
@@ -122,6 +125,11 @@ struct BalanceStepState {
   int shifting = -1;          // phase 3: this foot will step back once the weight is over the other (-1: none)
   double shift_time = 0.0;    // s shifting so far
   Eigen::Vector2d return_to = Eigen::Vector2d::Zero();  // where it steps back to (sole centre)
+  // After the return step's hold on the com (its weight shift and swing, the caller's balance): the com target coming
+  // back from where the hold left it to where the stance wants it (world x y), and for how long so far.
+  bool settling = false;
+  Eigen::Vector2d settle_target = Eigen::Vector2d::Zero();
+  double settle_elapsed = 0.0;
   // The push observer (the caller's, after each physics step): the com's horizontal acceleration less what the
   // ground's contact forces give it, low-passed (push_filter_tau), and the com velocity it was differenced from.
   Eigen::Vector2d push_acc = Eigen::Vector2d::Zero(), push_vcom = Eigen::Vector2d::Zero();
