@@ -26,14 +26,14 @@ using eng::control::pose_fk;
 double stance_drop(const QpBalance&, const Boxer& b) { return b.settings.tuning.qp.stance_drop; }
 
 namespace {
-// The mean of a body's contact points in the plan (floor x, y): a foot's middle as it stands; false when it has none.
-bool contact_centre(const std::vector<eng::control::QpContact>& contacts, int body, Eigen::Vector2d& centre) {
+// The mean of a body's contact points in the plan (floor x, y): a foot's middle as it stands. Left as it was when the
+// body has none.
+void contact_centre(const std::vector<eng::control::QpContact>& contacts, int body, Eigen::Vector2d& centre) {
   Eigen::Vector2d sum = Eigen::Vector2d::Zero();
   int count = 0;
   for (const auto& c : contacts)
     if (c.body == body) sum += c.point.head<2>(), ++count;
   if (count > 0) centre = sum / count;
-  return count > 0;
 }
 
 // The com target once the return step's hold on it ends (its touch-down, or its weight shift given up): from where the
@@ -202,9 +202,9 @@ void actuate(QpBalance& q, BalanceTick& tick) {
         eng::control::convex_hull_2d_in_place(q.pts, q.hull);
         target = eng::control::clamp_to_polygon(q.hull, target, tq.shift_margin);
         if (b.ctl.balance_steps.shifting == k) {
-          // The return step's goes over the foot's middle: shift_margin inside its hull is 1 cm inside its side (the
-          // margin moves the hull's corners toward its centre), the lift waits for the capture point
-          // BalanceStepTuning::return_shift_margin (4 cm) inside it, and 1 in 200 of Yin's pushes lifted a return.
+          // The return step's shift goes over the foot's middle. shift_margin inside its hull is only 1 cm inside its
+          // side (the margin moves the hull's corners toward its centre), while the lift waits for the capture point
+          // BalanceStepTuning::return_shift_margin (4 cm) inside it: 1 in 200 of Yin's pushes lifted a return.
           contact_centre(in.contacts, other, target);
           if (!q.return_shift) q.return_shift_target = com_a.head<2>();
           const Eigen::Vector2d to = target - q.return_shift_target;
