@@ -334,10 +334,13 @@ void take_balance_steps(const eng::physics::Model& m, const eng::physics::Data& 
       b.metrics.most_steps_in_recovery = std::max(b.metrics.most_steps_in_recovery, st.steps_in_recovery);
     } else if (st.recovering) {
       // PHASE 2 (the QP's com task over the new support) until the com has all but stopped; then PHASE 3: the foot
-      // that moved last steps back to where the stance has it relative to the other (the desired pose's feet).
+      // farther from the com steps back to where the stance has it relative to the other (the desired pose's feet).
+      // Its weight shift is the shorter one. The foot that moved last, as before, often stood under the com after a
+      // cross-over: the com went back 0.2-0.3 m over the other foot first (1.5-2.5 s, a fifth given up) while the
+      // thighs stood crossed (docs/decisions/balance-steps.md, thirteenth round).
       st.settled = vcom.norm() < t.settle_speed && out < 0.0 ? st.settled + dt : 0.0;
       if (st.settled > t.settle_time) {
-        const int r = s.foot >= 0 ? s.foot : k;
+        const int r = (com.head<2>() - sole[0]).norm() > (com.head<2>() - sole[1]).norm() ? 0 : 1;
         pose_fk(desc.skeleton, b.desired.pose, b.scratch.fk_W, b.scratch.fk_P);
         Eigen::Vector2d want[2];
         for (int j = 0; j < 2; ++j)

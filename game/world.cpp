@@ -443,6 +443,9 @@ nlohmann::json world_report(const World& w) {
                       {"late_landings", m.late_landings},
                       {"legs_overlap_max_m", m.legs_overlap_max},
                       {"legs_overlap_s", m.legs_overlap_s},
+                      // On its feet at the end in a stance it can fight from (the return step's test: not crossed, not in
+                      // line; false once fallen).
+                      {"stance_can_fight_end", !b.limp && !m.fell && stance_can_fight(w.data, b)},
                       {"fell_pelvis_m", {m.fell_pelvis.x(), m.fell_pelvis.y(), m.fell_pelvis.z()}},
                       {"fell_reason", m.fell_reason},
                       {"time_upright_s", m.time_upright},

@@ -463,14 +463,14 @@ TEST(FootSlide, TheCrossDrillsRearFootStaysPlantedWithTheAnkleLimitsInThePlan) {
 }
 
 TEST(BalanceSteps, AStanceTheRecoveryLeftCrossedReturnsToOneTheBoxerCanFightFrom) {
-  // 300 N x 0.2 s to the right, seed 4: the lead foot crosses 0.2 m over in front of the rear one and the recovery
-  // settles there. Yin's third phase, the return step, used to wait for a weight shift it could not finish (its com
-  // target 1 cm inside the rear sole's side, the lift asking for the capture point 4 cm inside): 1 of Yin's 200 pushes
-  // on seeds 1-40 lifted one, and the boxers stood cross-legged. Now the com goes over the rear foot's middle and comes
-  // to rest, the lead foot swings back to its guard place, 0.22 m down onto the floor between two crates (the com
-  // comes down for it), the com is held over the stance foot until the touch-down and then comes back to the clip's
-  // slowly, and the boxer ends in a stance it can fight from.
-  auto o = boxing::parse_cli({"--scenario", "push", "--seed", "4", "--push-dir", "270", "--push-force", "300",
+  // 394 N x 0.2 s to the right, seed 16: the lead (left) foot crosses over to land 0.5 m right of the rear one, the
+  // rear foot follows, and the recovery settles with the feet crossed, the thighs through each other. Yin's third
+  // phase, the return step, first shifts the weight over one foot, then swings the other back to its guard place
+  // relative to it. The foot that moved last, as the return used to choose, stood under the com: its weight shift
+  // went the long way and was given up after 2.5 s, and the boxer stood cross-legged to the end (5.4 s of the legs
+  // through each other). The foot farther from the com returns now: one return step, and the boxer ends in a stance
+  // it can fight from, its legs apart after it.
+  auto o = boxing::parse_cli({"--scenario", "push", "--seed", "16", "--push-dir", "270", "--push-force", "394",
                               "--push-duration", "0.2", "--push-at", "2", "--stepping", "on"});
   ASSERT_TRUE(o.ok());
   auto w = boxing::make_world(*o);
@@ -488,6 +488,7 @@ TEST(BalanceSteps, AStanceTheRecoveryLeftCrossedReturnsToOneTheBoxerCanFightFrom
   EXPECT_EQ(m.late_landings, 0);
   EXPECT_FALSE(m.fell) << "fell at " << m.fell_at << " s (" << m.fell_reason << ")";
   EXPECT_TRUE(boxing::stance_can_fight(world.data, world.boxers[0]));
+  EXPECT_LT(m.legs_overlap_s, 4.0);
 }
 
 TEST(BalanceSteps, AStandingBoxerTakesNoneAndItsLegsNeverTouch) {

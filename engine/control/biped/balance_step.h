@@ -10,8 +10,9 @@
 //      the same rule;
 //   2. reduce momentum: the balance QP's com task over the new, wider support (the caller's);
 //   3. return to the stance: once the com has nearly stopped (Yin's gamma = 0.15 m/s), a slower step puts the foot
-//      that moved back where the stance has it relative to the other foot (the boxer's guard), unless the feet already
-//      stand as the boxer can fight from (return_keep_width).
+//      farther from the com (the one the weight is off, so the shift before it is the shorter) where the stance has it
+//      relative to the other foot (the boxer's guard), unless the feet already stand as the boxer can fight from
+//      (return_keep_width).
 // Pure functions over plain data; the game calls them each control tick (game/boxer_stepping.cpp).
 #include <Eigen/Core>
 #include <vector>
@@ -64,9 +65,11 @@ struct BalanceStepTuning {
   // guard's, and their return fell more often than the push.
   double return_keep_width = 0.10;
   double return_duration = 0.45;   // s, the return step's swing (unhurried)
-  // m, it lifts once the capture point is this far inside the other sole (2 cm: at the stance toe's edge, and the body
-  // ran off it; match seed 19 with the stagger) ...
-  double return_shift_margin = 0.04;
+  // m, it lifts once the capture point is this far inside the other sole. 4 cm was not reached by a fifth of the
+  // shifts: the com came to rest 1-4 cm short of it and the shift was given up (Yin's pushes, seeds 1-40). 2 cm with
+  // the com still moving (0.35 m/s, before return_lift_speed) ran off the stance toe's edge (match seed 19 with the
+  // stagger); at rest it holds (docs/decisions/balance-steps.md, thirteenth round) ...
+  double return_shift_margin = 0.02;
   // s, ... and is given up when the weight shift takes longer (1 s: a shift of 0.2-0.3 m at the balance QP's
   // return_shift_speed was given up before the com got there, and the feet stayed crossed to the end) ...
   double return_shift_max = 2.5;
