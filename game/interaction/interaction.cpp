@@ -120,14 +120,16 @@ void throw_object(World& w, const InputEvent& e) {
     vel = Vec3(0.0, e.speed, (-0.2 + 0.5 * 9.81 * T * T) / T);
   }
   // A free place to appear: above the crates or floor under it and above any object in play there (a throw at a
-  // boxer lying low started inside the crates; one started inside a resting crate: contacts 0.38 m deep).
+  // boxer lying low started inside the crates; one started inside a resting crate: contacts 0.38 m deep), and above
+  // any boxer's geom there (boxer 0 thrown at while boxer 1 lay 3 m in front of it, on the throw's line: a ball and
+  // a crate started in its pelvis, contacts 10-17 cm deep). A geom's box from the last step's broadphase.
   auto extent = [](ObjectKind k) { return k == ObjectKind::Ball ? kBall.radius : kCrate.half * std::sqrt(3.0); };
   const double ext = extent(e.object_kind);
   double ground = 0.0;  // the highest top under the object's footprint
   for (int i = -1; i <= 1; ++i)
     for (int j = -1; j <= 1; ++j) ground = std::max(ground, w.arena.top_at(from.x() + i * ext, from.y() + j * ext));
   from.z() = std::max(from.z(), ground + ext + 0.02);
-  for (int pass = 0; pass < 4; ++pass)
+  for (int pass = 0; pass < 4; ++pass) {
     for (int k = 0; k < int(in.objects.size()); ++k) {
       const ThrownObject& other = in.objects[k];
       if (k == pick || !other.live) continue;
@@ -135,6 +137,15 @@ void throw_object(World& w, const InputEvent& e) {
       const double reach = ext + (other.group == 0 ? 0.3 : extent(other.kind));
       if ((from - c).norm() < reach) from.z() = c.z() + reach + 0.02;
     }
+    for (const Boxer& b : w.boxers)
+      for (size_t i = 0; i < b.bodies.first_geom.size(); ++i)
+        for (int g = b.bodies.first_geom[i]; g < b.bodies.first_geom[i] + b.bodies.geom_count[i]; ++g) {
+          if (g >= int(w.data.aabbs.size())) continue;  // before the first step
+          const eng::physics::Aabb& box = w.data.aabbs[g];
+          if (((from.array() > box.lo.array() - ext) && (from.array() < box.hi.array() + ext)).all())
+            from.z() = box.hi.z() + ext + 0.02;
+        }
+  }
   ThrownObject& o = in.objects[pick];
   o.live = true;
   o.thrown_at = w.data.time;

@@ -156,6 +156,29 @@ TEST(Interaction, AThrownBallBouncesRollsAndSettlesOnTheFloor) {
   EXPECT_LT(w->data.v.segment(w->model.bodies[ball].v_index, 3).norm(), 0.05);
 }
 
+// A throw whose starting point is inside a boxer (chaos's throws start 3 m in front of their target, where the other
+// boxer may lie) starts above the boxer's geoms instead: the first contacts are shallow. Started where it was asked,
+// inside the chest, the ball's contacts were 10-17 cm deep.
+TEST(Interaction, AThrowStartingInsideABoxerAppearsAboveIt) {
+  auto probe = make({"--scenario", "stand", "--seed", "1"});
+  run_until(*probe, 0.5);
+  const Eigen::Vector3d chest = probe->data.com_world[body_of(*probe, 0, "chest")];
+  const InputEvent t = throw_from(0.5, boxing::ObjectKind::Ball, chest, Eigen::Vector3d(0.0, 1.0, 0.0));
+  auto w = make({"--scenario", "stand", "--seed", "1"}, {t});
+  const int ball = w->interaction.objects[0].body;
+  run_until(*w, 0.5);
+  boxing::step_world(*w);  // the throw
+  EXPECT_TRUE(w->interaction.objects[0].live);
+  EXPECT_GT(w->data.x[ball].p.z(), chest.z() + boxing::kBall.radius);
+  double deepest = 0.0;
+  for (int i = 0; i < 24; ++i) {
+    boxing::step_world(*w);
+    for (const auto& c : w->data.contacts)
+      if (c.body_a == ball || c.body_b == ball) deepest = std::max(deepest, c.point.depth);
+  }
+  EXPECT_LT(deepest, 0.03);
+}
+
 // 50 random violent drags (random bone, 0.5-2 m offsets, normal or strong spring, 0.15-0.5 s) per seed, seeds 1-5,
 // boxers and a thrown crate: every step finite, no boxer body faster than 30 m/s, no body centre inside a crate of
 // the arena or under the floor.
