@@ -57,11 +57,12 @@ struct BoxerMetrics {
   int most_steps_in_recovery = 0;           // the longest multi-step recovery
   int late_landings = 0;  // balance steps set down by time, their sole not on a top (BalanceStepTuning::late)
   double max_com_speed = 0.0;
-  // The legs' clearance: a boxer's own geoms do not collide (self_collide off), so a swing through the stance leg
-  // would pass through it with nothing to stop it. The deepest overlap of a left-leg geom (thigh, shank, foot) with a
-  // right-leg one on its feet (guard or stunned; m), and the time spent overlapping more than kLegsOverlap (s).
+  // The legs' clearance: of a boxer's own geoms only the thighs collide with each other (add_boxer), so a shank or a
+  // foot swung through the stance leg passes through it with nothing to stop it. The deepest overlap of a left-leg geom
+  // (thigh, shank, foot) with a right-leg one on its feet (guard or stunned; m), the time spent overlapping more than
+  // kLegsOverlap (s), and the time the thighs touch (a contact between them, on its feet; s).
   static constexpr double kLegsOverlap = 0.01;  // m
-  double legs_overlap_max = 0.0, legs_overlap_s = 0.0;
+  double legs_overlap_max = 0.0, legs_overlap_s = 0.0, thighs_touch_s = 0.0;
   std::vector<int> leg_geoms[2];  // the model's geoms of each leg (found on the first sample)
   // How far each foot's sole centre slid over the ground while planted, upright (m): per planting (the foot on the
   // ground, no step carrying it) the distance from where it was set down to where it is or lifted, summed over the

@@ -31,6 +31,12 @@ void measure_legs_overlap(const eng::physics::Model& m, const eng::physics::Data
   const double deepest = eng::physics::deepest_overlap(m, d, mt.leg_geoms[0], mt.leg_geoms[1]);
   mt.legs_overlap_max = std::max(mt.legs_overlap_max, deepest);
   if (deepest > BoxerMetrics::kLegsOverlap) mt.legs_overlap_s += dt;
+  const int tl = b.bodies.body[b.bones.leg[0].thigh], tr = b.bodies.body[b.bones.leg[1].thigh];
+  for (const eng::physics::Contact& c : d.contacts)
+    if ((c.body_a == tl && c.body_b == tr) || (c.body_a == tr && c.body_b == tl)) {
+      mt.thighs_touch_s += dt;
+      break;
+    }
 }
 
 }  // namespace

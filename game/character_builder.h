@@ -2,6 +2,7 @@
 // Turns a character described as content (glTF skeleton + per-bone physics extras) into one articulation of the
 // physics model: a free-floating pelvis and a tree of ball / hinge / fixed joints, with the bones' shapes as geoms.
 #include <Eigen/Geometry>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,11 @@ struct CharacterBodies {
 // themselves when self_collide is false). `friction_scale` multiplies every geom's friction.
 CharacterBodies add_character(eng::physics::Model& model, const eng::assets::CharacterDesc& desc,
                               const std::string& prefix, uint32_t group, uint32_t mask, bool self_collide);
+
+// The geoms of `bones` (skeleton indices) collide with each other; the character's other geoms still collide with none
+// of its own (Geom::self_collide: a pair within one articulation collides only if both geoms have it; a parent and
+// its child never do).
+void set_self_colliding(eng::physics::Model& model, const CharacterBodies& c, std::initializer_list<int> bones);
 
 // Sets the articulation's coordinates to a pose: root world position/orientation and per-bone parent-space
 // rotations (ball joints take the rotation, hinges its angle about the axis, fixed joints nothing).

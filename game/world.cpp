@@ -183,6 +183,10 @@ void add_boxer(World& w, int index, const Eigen::Vector3f& color, bool limp, con
   }
   const uint32_t group = 2u << index;
   b.bodies = add_character(w.model, w.boxer_desc, "b" + std::to_string(index) + "_", group, 0xffffffffu, false);
+  // The thighs hold each other off: passing through each other, a sideways push's cross-over stood with its thighs in an X
+  // up to 13 cm deep. The shanks and feet still pass: colliding too, a cross-over's next step, from behind the stance
+  // leg to in front of it, caught on it and the boxer fell (docs/decisions/balance-steps.md, tenth and fourteenth rounds).
+  set_self_colliding(w.model, b.bodies, {b.bones.leg[0].thigh, b.bones.leg[1].thigh});
   b.settings.space = servo_space_from_name(w.options.servo);
   b.settings.balance_qp = w.options.balance == "qp";
   // Balance steps: on in the push lab and where the boxers walk the graph (the match, the walk), there past what the
@@ -443,6 +447,7 @@ nlohmann::json world_report(const World& w) {
                       {"late_landings", m.late_landings},
                       {"legs_overlap_max_m", m.legs_overlap_max},
                       {"legs_overlap_s", m.legs_overlap_s},
+                      {"thighs_touch_s", m.thighs_touch_s},
                       // On its feet at the end in a stance it can fight from (the return step's test: not crossed, not in
                       // line; false once fallen).
                       {"stance_can_fight_end", !b.limp && !m.fell && stance_can_fight(w.data, b)},

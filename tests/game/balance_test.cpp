@@ -5,11 +5,15 @@
 // used to floor person space (its rear crate is 12 cm lower than the lead one).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <string>
 #include <utility>
+#include <vector>
 
+#include "engine/physics/overlap.h"
 #include "game/boxer_stepping.h"
 #include "game/cli.h"
 #include "game/world.h"
@@ -493,12 +497,54 @@ TEST(BalanceSteps, AStanceTheRecoveryLeftCrossedReturnsToOneTheBoxerCanFightFrom
 
 TEST(BalanceSteps, AStandingBoxerTakesNoneAndItsLegsNeverTouch) {
   // Standing in guard for 10 s: the capture point never leaves the soles, no step is taken for nothing; the guard's
-  // legs (which do not collide with each other: BoxerMetrics::legs_overlap_*) stay apart.
+  // legs stay apart (BoxerMetrics::legs_overlap_*), its thighs never touch.
   const auto m = run({"--scenario", "stand", "--seed", "4", "--stepping", "on"}, 10.0);
   EXPECT_FALSE(m.fell);
   EXPECT_EQ(m.balance_steps, 0);
   EXPECT_EQ(m.legs_overlap_max, 0.0);
   EXPECT_EQ(m.legs_overlap_s, 0.0);
+  EXPECT_EQ(m.thighs_touch_s, 0.0);
+}
+
+TEST(BalanceSteps, ACrossOversThighsHoldEachOtherOffWhereTheyPassedThroughEachOther) {
+  // 394 N x 0.2 s to the right, seed 3: the left foot crosses over and the feet end crossed 0.4-0.5 m. With the thighs
+  // not colliding (as every leg geom was until the fourteenth round, docs/decisions/balance-steps.md), they stood in
+  // an X 13 cm deep. Colliding (add_boxer), they touch and stay within the contact's own penetration; the boxer stands.
+  const auto deepest_thighs = [](bool collide, boxing::BoxerMetrics* out) {
+    auto o = boxing::parse_cli({"--scenario", "push", "--seed", "3", "--push-dir", "270", "--push-force", "394",
+                                "--push-duration", "0.2", "--push-at", "2", "--stepping", "on"});
+    EXPECT_TRUE(o.ok());
+    auto w = boxing::make_world(*o);
+    EXPECT_TRUE(w.ok()) << w.error();
+    boxing::World& world = **w;
+    const boxing::Boxer& b = world.boxers[0];
+    std::vector<int> thigh[2];
+    for (int k = 0; k < 2; ++k) {
+      const int bone = b.bones.leg[k].thigh;
+      for (int g = b.bodies.first_geom[bone]; g < b.bodies.first_geom[bone] + b.bodies.geom_count[bone]; ++g) {
+        thigh[k].push_back(g);
+        EXPECT_TRUE(world.model.geoms[g].self_collide);  // as built
+        world.model.geoms[g].self_collide = collide;
+      }
+    }
+    double deepest = 0.0;
+    for (int i = 0; i < int(8.0 / boxing::kPhysicsDt); ++i) {
+      boxing::step_world(world);
+      if (!b.metrics.fell) deepest = std::max(deepest, eng::physics::deepest_overlap(world.model, world.data, thigh[0], thigh[1]));
+    }
+    *out = b.metrics;
+    return deepest;
+  };
+  boxing::BoxerMetrics colliding, passing;
+  const double held = deepest_thighs(true, &colliding), passed = deepest_thighs(false, &passing);
+  std::printf("thighs through each other at most: colliding %.3f m (touching %.2f s), passing %.3f m\n", held,
+              colliding.thighs_touch_s, passed);
+  EXPECT_GT(passed, 0.08);
+  EXPECT_EQ(passing.thighs_touch_s, 0.0);
+  EXPECT_LT(held, 0.015);
+  EXPECT_GT(colliding.thighs_touch_s, 0.5);
+  EXPECT_FALSE(colliding.fell) << "fell at " << colliding.fell_at << " s (" << colliding.fell_reason << ")";
+  EXPECT_GE(colliding.balance_steps, 2);
 }
 
 }  // namespace
