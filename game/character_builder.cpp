@@ -58,7 +58,8 @@ CharacterBodies add_character(eng::physics::Model& model, const eng::assets::Cha
 
 void set_self_colliding(eng::physics::Model& model, const CharacterBodies& c, std::initializer_list<int> bones) {
   for (int bone : bones)
-    for (int g = c.first_geom[bone]; g < c.first_geom[bone] + c.geom_count[bone]; ++g) model.geoms[g].self_collide = true;
+    for (int g = c.first_geom[bone]; g < c.first_geom[bone] + c.geom_count[bone]; ++g)
+      model.geoms[g].self_collide = true;
 }
 
 void set_character_pose(const eng::physics::Model& model, eng::physics::Data& data, const CharacterBodies& c,

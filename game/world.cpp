@@ -183,9 +183,10 @@ void add_boxer(World& w, int index, const Eigen::Vector3f& color, bool limp, con
   }
   const uint32_t group = 2u << index;
   b.bodies = add_character(w.model, w.boxer_desc, "b" + std::to_string(index) + "_", group, 0xffffffffu, false);
-  // The thighs hold each other off: passing through each other, a sideways push's cross-over stood with its thighs in an X
-  // up to 13 cm deep. The shanks and feet still pass: colliding too, a cross-over's next step, from behind the stance
-  // leg to in front of it, caught on it and the boxer fell (docs/decisions/balance-steps.md, tenth and fourteenth rounds).
+  // The thighs hold each other off: passing through each other, a sideways push's cross-over stood with its thighs in
+  // an X up to 13 cm deep. The shanks and feet still pass: colliding too, a cross-over's next step, from behind the
+  // stance leg to in front of it, caught on it and the boxer fell (docs/decisions/balance-steps.md, tenth and
+  // fourteenth rounds).
   set_self_colliding(w.model, b.bodies, {b.bones.leg[0].thigh, b.bones.leg[1].thigh});
   b.settings.space = servo_space_from_name(w.options.servo);
   b.settings.balance_qp = w.options.balance == "qp";

@@ -530,7 +530,8 @@ TEST(BalanceSteps, ACrossOversThighsHoldEachOtherOffWhereTheyPassedThroughEachOt
     double deepest = 0.0;
     for (int i = 0; i < int(8.0 / boxing::kPhysicsDt); ++i) {
       boxing::step_world(world);
-      if (!b.metrics.fell) deepest = std::max(deepest, eng::physics::deepest_overlap(world.model, world.data, thigh[0], thigh[1]));
+      if (!b.metrics.fell)
+        deepest = std::max(deepest, eng::physics::deepest_overlap(world.model, world.data, thigh[0], thigh[1]));
     }
     *out = b.metrics;
     return deepest;
