@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -33,6 +34,16 @@ boxing::BoxerMetrics run(const std::vector<std::string>& args, double seconds,
   const int steps = int(seconds / boxing::kPhysicsDt);
   for (int i = 0; i < steps; ++i) boxing::step_world(world);
   return world.boxers[0].metrics;
+}
+
+// The push lab's world for Yin's push to the right, 394 N x 0.2 s at 2 s, steps on, on `seed`.
+std::unique_ptr<boxing::World> right_push_world(const char* seed) {
+  auto o = boxing::parse_cli({"--scenario", "push", "--seed", seed, "--push-dir", "270", "--push-force", "394",
+                              "--push-duration", "0.2", "--push-at", "2", "--stepping", "on"});
+  EXPECT_TRUE(o.ok());
+  auto w = boxing::make_world(*o);
+  EXPECT_TRUE(w.ok()) << w.error();
+  return w.ok() ? std::move(*w) : nullptr;
 }
 
 class PushFromEveryDirection : public ::testing::TestWithParam<std::string> {};
@@ -468,18 +479,15 @@ TEST(FootSlide, TheCrossDrillsRearFootStaysPlantedWithTheAnkleLimitsInThePlan) {
 
 TEST(BalanceSteps, AStanceTheRecoveryLeftCrossedReturnsToOneTheBoxerCanFightFrom) {
   // 394 N x 0.2 s to the right, seed 16: the lead (left) foot crosses over to land 0.5 m right of the rear one, the
-  // rear foot follows, and the recovery settles with the feet crossed, the thighs through each other. Yin's third
+  // rear foot follows, and the recovery settles with the feet crossed, the legs through each other. Yin's third
   // phase, the return step, first shifts the weight over one foot, then swings the other back to its guard place
   // relative to it. The foot that moved last, as the return used to choose, stood under the com: its weight shift
   // went the long way and was given up after 2.5 s, and the boxer stood cross-legged to the end (5.4 s of the legs
   // through each other). The foot farther from the com returns now: one return step, and the boxer ends in a stance
   // it can fight from, its legs apart after it.
-  auto o = boxing::parse_cli({"--scenario", "push", "--seed", "16", "--push-dir", "270", "--push-force", "394",
-                              "--push-duration", "0.2", "--push-at", "2", "--stepping", "on"});
-  ASSERT_TRUE(o.ok());
-  auto w = boxing::make_world(*o);
-  ASSERT_TRUE(w.ok()) << w.error();
-  boxing::World& world = **w;
+  const std::unique_ptr<boxing::World> w = right_push_world("16");
+  ASSERT_TRUE(w);
+  boxing::World& world = *w;
   bool crossed = false;
   for (int i = 0; i < int(8.0 / boxing::kPhysicsDt); ++i) {
     boxing::step_world(world);
@@ -511,12 +519,9 @@ TEST(BalanceSteps, ACrossOversThighsHoldEachOtherOffWhereTheyPassedThroughEachOt
   // not colliding (as every leg geom was until the fourteenth round, docs/decisions/balance-steps.md), they stood in
   // an X 13 cm deep. Colliding (add_boxer), they touch and stay within the contact's own penetration; the boxer stands.
   const auto deepest_thighs = [](bool collide, boxing::BoxerMetrics* out) {
-    auto o = boxing::parse_cli({"--scenario", "push", "--seed", "3", "--push-dir", "270", "--push-force", "394",
-                                "--push-duration", "0.2", "--push-at", "2", "--stepping", "on"});
-    EXPECT_TRUE(o.ok());
-    auto w = boxing::make_world(*o);
-    EXPECT_TRUE(w.ok()) << w.error();
-    boxing::World& world = **w;
+    const std::unique_ptr<boxing::World> w = right_push_world("3");
+    if (!w) return 0.0;
+    boxing::World& world = *w;
     const boxing::Boxer& b = world.boxers[0];
     std::vector<int> thigh[2];
     for (int k = 0; k < 2; ++k) {
