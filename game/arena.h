@@ -33,6 +33,10 @@ struct Arena {
   double top_at(double x, double y) const;
 };
 
+// A top lower than this is the floor around the platform (Arena::top_at reads 0 there; every crate's top is 0.14 m
+// or more: 0.20-0.44, less up to 6 cm where make_arena sets the feet's step).
+inline constexpr double kFloorTop = 0.05;  // m
+
 // Columns of one or two stacked crates on a grid; the two cells under each boxer's feet differ by at least
 // min_step metres so every boxer stands with one foot higher than the other.
 // The arena as the biped layer's height query (footholds, leg fitting); the arena must outlive it.

@@ -340,12 +340,25 @@ void take_balance_steps(const eng::physics::Model& m, const eng::physics::Data& 
       // thighs stood crossed (docs/decisions/balance-steps.md, thirteenth round).
       st.settled = vcom.norm() < t.settle_speed && out < 0.0 ? st.settled + dt : 0.0;
       if (st.settled > t.settle_time) {
-        const int r = (com.head<2>() - sole[0]).norm() > (com.head<2>() - sole[1]).norm() ? 0 : 1;
+        int r = (com.head<2>() - sole[0]).norm() > (com.head<2>() - sole[1]).norm() ? 0 : 1;
         pose_fk(desc.skeleton, b.desired.pose, b.scratch.fk_W, b.scratch.fk_P);
         Eigen::Vector2d want[2];
         for (int j = 0; j < 2; ++j)
           want[j] = (b.scratch.fk_P[feet[j]] + b.scratch.fk_W[feet[j]] * g.centre).head<2>();
-        const Eigen::Vector2d to = sole[1 - r] + (want[r] - want[1 - r]);
+        Eigen::Vector2d to = sole[1 - r] + (want[r] - want[1 - r]);
+        if (t.return_onto_platform) {
+          // Off the platform: foot j's return to `at` lands on the floor (its foothold's top, as the step will find
+          // it) while the stance foot stands on a crate (the top under its sole's centre).
+          const auto off_platform = [&](int j, const Eigen::Vector2d& at) {
+            eng::control::BalanceStep probe;
+            eng::control::start_balance_step(probe, j, true, sole[j], at, sole[1 - j], t.pass_clearance,
+                                             eng::control::heading_of(b.scratch.fk_W[feet[j]]), t.return_duration,
+                                             ground, g, t.foothold);
+            return arena.top_at(sole[1 - j].x(), sole[1 - j].y()) > kFloorTop && probe.to_top < kFloorTop;
+          };
+          const Eigen::Vector2d other = sole[r] + (want[1 - r] - want[r]);
+          if (off_platform(r, to) && !off_platform(1 - r, other)) r = 1 - r, to = other;
+        }
         if ((to - sole[r]).norm() > t.return_tolerance && !stance_can_fight(d, b) && b.settings.stepping) {
           st.shifting = r;  // first the weight goes over the other foot (below), then the foot steps
           st.shift_time = 0.0;

@@ -438,7 +438,7 @@ TEST(FootSlide, AGuardStandsStillAndADrillsSlideIsAtLeastTheFootsDisplacement) {
   boxing::World& world = **w;
   const boxing::Boxer& b = world.boxers[0];
   const auto sole = [&](int k) {  // the sole centre, as the metric reads it
-    const auto& x = world.data.x[b.bodies.body[b.bones.foot[k]]];
+    const eng::physics::Pose& x = world.data.x[b.bodies.body[b.bones.foot[k]]];
     return Eigen::Vector2d((x.p + x.R * b.settings.tuning.foot.centre).head<2>());
   };
   boxing::step_world(world);
@@ -551,6 +551,42 @@ TEST(BalanceSteps, ACrossOversThighsHoldEachOtherOffWhereTheyPassedThroughEachOt
   EXPECT_GT(colliding.thighs_touch_s, 0.5);
   EXPECT_FALSE(colliding.fell) << "fell at " << colliding.fell_at << " s (" << colliding.fell_reason << ")";
   EXPECT_GE(colliding.balance_steps, 2);
+}
+
+TEST(BalanceSteps, AReturnThatWouldStepOffThePlatformIsTakenByTheOtherFoot) {
+  // 394 N x 0.2 s to the right, seed 3: a second recovery leaves the right foot 0.1 m from the platform's edge, and its
+  // return (where the stance has it relative to the left foot) lands on the floor, 0.36 m below its crate. The boxer
+  // then stood in a long lunge across the edge and fell at 9.8 s. The left foot returns instead, onto its crate.
+  // Counts, for 14 s, the time a foot's sole stood within 5 cm of the floor.
+  const auto on_floor_s = [](bool onto_platform, boxing::BoxerMetrics* out) {
+    const std::unique_ptr<boxing::World> w = right_push_world("3");
+    if (!w) return 0.0;
+    boxing::World& world = *w;
+    boxing::Boxer& b = world.boxers[0];
+    EXPECT_TRUE(b.settings.tuning.balance_step.return_onto_platform);  // as built
+    b.settings.tuning.balance_step.return_onto_platform = onto_platform;
+    double floor_s = 0.0;
+    for (int i = 0; i < int(14.0 / boxing::kPhysicsDt); ++i) {
+      boxing::step_world(world);
+      if (b.metrics.fell) continue;
+      for (int k = 0; k < 2; ++k) {
+        const eng::physics::Pose& x = world.data.x[b.bodies.body[b.bones.foot[k]]];
+        if ((x.p + x.R * b.settings.tuning.foot.sole_offset()).z() < boxing::kFloorTop) floor_s += boxing::kPhysicsDt;
+      }
+    }
+    *out = b.metrics;
+    return floor_s;
+  };
+  boxing::BoxerMetrics onto, off;
+  const double onto_s = on_floor_s(true, &onto), off_s = on_floor_s(false, &off);
+  std::printf("a foot on the floor: %.2f s (returns onto the platform), %.2f s (returns where the stance says)\n",
+              onto_s, off_s);
+  EXPECT_GT(off_s, 1.0);
+  EXPECT_TRUE(off.fell);
+  EXPECT_EQ(onto_s, 0.0);
+  EXPECT_EQ(onto.return_steps, 1);
+  EXPECT_FALSE(onto.fell) << "fell at " << onto.fell_at << " s (" << onto.fell_reason << ")";
+  EXPECT_GE(onto.balance_steps, 4);
 }
 
 }  // namespace

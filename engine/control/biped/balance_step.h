@@ -65,6 +65,12 @@ struct BalanceStepTuning {
   // guard's, and their return fell more often than the push.
   double return_keep_width = 0.10;
   double return_duration = 0.45;   // s, the return step's swing (unhurried)
+  // The return step is the other foot's when this one's would land off the platform, on the floor, from a stance on a
+  // crate (and the other's would not): returned where the stance has it relative to the other, a foot pushed near the
+  // platform's edge stepped down 0.36 m to the floor and the boxer stood in a long lunge across the edge until its next
+  // balance step failed (right 394 N, seed 3: fell at 9.8 s). Yin's five pushes, seeds 1-96, 14 s: 442 -> 447 of 480
+  // stand, 10 returns changed, none fell that stood (docs/decisions/balance-steps.md, fifteenth round).
+  bool return_onto_platform = true;
   // m, it lifts once the capture point is this far inside the other sole. 4 cm was not reached by a fifth of the
   // shifts: the com came to rest 1-4 cm short of it and the shift was given up (Yin's pushes, seeds 1-40). 2 cm with
   // the com still moving (0.35 m/s, before return_lift_speed) ran off the stance toe's edge (match seed 19 with the
