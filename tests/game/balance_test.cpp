@@ -46,6 +46,14 @@ std::unique_ptr<boxing::World> right_push_world(const char* seed) {
   return w.ok() ? std::move(*w) : nullptr;
 }
 
+// Steps `world` for `seconds` of simulated time, calling `each` after every step while boxer 0 is on its feet.
+void step_while_up(boxing::World& world, double seconds, const std::function<void()>& each) {
+  for (int i = 0; i < int(seconds / boxing::kPhysicsDt); ++i) {
+    boxing::step_world(world);
+    if (!world.boxers[0].metrics.fell) each();
+  }
+}
+
 class PushFromEveryDirection : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(PushFromEveryDirection, A150NewtonChestPushIsSurvivedWithNoRootHelp) {
@@ -533,11 +541,9 @@ TEST(BalanceSteps, ACrossOversThighsHoldEachOtherOffWhereTheyPassedThroughEachOt
       }
     }
     double deepest = 0.0;
-    for (int i = 0; i < int(8.0 / boxing::kPhysicsDt); ++i) {
-      boxing::step_world(world);
-      if (!b.metrics.fell)
-        deepest = std::max(deepest, eng::physics::deepest_overlap(world.model, world.data, thigh[0], thigh[1]));
-    }
+    step_while_up(world, 8.0, [&] {
+      deepest = std::max(deepest, eng::physics::deepest_overlap(world.model, world.data, thigh[0], thigh[1]));
+    });
     *out = b.metrics;
     return deepest;
   };
@@ -566,14 +572,12 @@ TEST(BalanceSteps, AReturnThatWouldStepOffThePlatformIsTakenByTheOtherFoot) {
     EXPECT_TRUE(b.settings.tuning.balance_step.return_onto_platform);  // as built
     b.settings.tuning.balance_step.return_onto_platform = onto_platform;
     double floor_s = 0.0;
-    for (int i = 0; i < int(14.0 / boxing::kPhysicsDt); ++i) {
-      boxing::step_world(world);
-      if (b.metrics.fell) continue;
+    step_while_up(world, 14.0, [&] {
       for (int k = 0; k < 2; ++k) {
         const eng::physics::Pose& x = world.data.x[b.bodies.body[b.bones.foot[k]]];
         if ((x.p + x.R * b.settings.tuning.foot.sole_offset()).z() < boxing::kFloorTop) floor_s += boxing::kPhysicsDt;
       }
-    }
+    });
     *out = b.metrics;
     return floor_s;
   };
