@@ -48,6 +48,14 @@ double assist_reach(const eng::physics::Model& m, const Boxer& b) {
   return root_assist_limit(b) / (b.control_body.total_mass * m.gravity.norm());
 }
 
+void list_leg_geoms(const Boxer& b, std::vector<int> (&out)[2]) {
+  for (int k = 0; k < 2; ++k) {
+    const eng::control::LegBones& leg = b.bones.leg[k];
+    for (int i : {leg.thigh, leg.shank, leg.foot})
+      for (int g = 0; i >= 0 && g < b.bodies.geom_count[i]; ++g) out[k].push_back(b.bodies.first_geom[i] + g);
+  }
+}
+
 void boxer_joint_speed_limits(eng::physics::Model& m, const Boxer& b, double time) {
   const bool limp = b.ctl.state.fallen() || b.ctl.state.state == BoxerState::GettingUp || time < b.ctl.handled_until;
   for (int body : b.bodies.body) m.bodies[body].max_speed = limp ? kLimpJointMaxSpeed : 0.0;

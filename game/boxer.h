@@ -58,9 +58,11 @@ struct BoxerMetrics {
   int late_landings = 0;  // balance steps set down by time, their sole not on a top (BalanceStepTuning::late)
   double max_com_speed = 0.0;
   // The legs' clearance: of a boxer's own geoms only the thighs collide with each other (add_boxer), so a shank or a
-  // foot swung through the stance leg passes through it with nothing to stop it. The deepest overlap of a left-leg geom
+  // foot swung through the stance leg passes through it with nothing but the balance QP's leg clearance (a soft task,
+  // BalanceQpTuning::leg_clearance*) to stop it. The deepest overlap of a left-leg geom
   // (thigh, shank, foot) with a right-leg one on its feet (guard or stunned; m), the time spent overlapping more than
-  // kLegsOverlap (s), and the time the thighs touch (a contact between them, on its feet; s).
+  // kLegsOverlap (s), and the time the thighs touch (a contact between them that touches, physics::is_touching: not
+  // only a speculative one within the contact margin; on its feet; s).
   static constexpr double kLegsOverlap = 0.01;  // m
   double legs_overlap_max = 0.0, legs_overlap_s = 0.0, thighs_touch_s = 0.0;
   std::vector<int> leg_geoms[2];  // the model's geoms of each leg (found on the first sample)
@@ -222,6 +224,10 @@ double root_assist_limit(const Boxer& b);
 // How far beyond the feet that assist moves the centroidal moment pivot: tau / (m g) (Popovic, Goswami & Herr 2005),
 // m; 0 without a root spring. The balance steps' trigger and the balance step's swing pivot read it.
 double assist_reach(const eng::physics::Model& m, const Boxer& b);
+
+// Each leg's geoms (thigh, shank, foot; b.bones.leg[k]), from the character's per-bone geom ranges: leg k's appended
+// to out[k]. The report's leg-overlap metric and the balance QP's leg clearance read them.
+void list_leg_geoms(const Boxer& b, std::vector<int> (&out)[2]);
 
 // After a physics step: the metrics (upright time, com speed, tracking error, trace), then the state machine (a
 // fall: Guard -> Down), which the metrics then record.

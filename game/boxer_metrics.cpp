@@ -22,18 +22,13 @@ namespace {
 // b.bones and their geoms from the character's per-bone geom ranges (listed on the first sample).
 void measure_legs_overlap(const eng::physics::Model& m, const eng::physics::Data& d, Boxer& b, double dt) {
   BoxerMetrics& mt = b.metrics;
-  if (mt.leg_geoms[0].empty())
-    for (int k = 0; k < 2; ++k) {
-      const eng::control::LegBones& leg = b.bones.leg[k];
-      for (int i : {leg.thigh, leg.shank, leg.foot})
-        for (int g = 0; i >= 0 && g < b.bodies.geom_count[i]; ++g) mt.leg_geoms[k].push_back(b.bodies.first_geom[i] + g);
-    }
+  if (mt.leg_geoms[0].empty()) list_leg_geoms(b, mt.leg_geoms);
   const double deepest = eng::physics::deepest_overlap(m, d, mt.leg_geoms[0], mt.leg_geoms[1]);
   mt.legs_overlap_max = std::max(mt.legs_overlap_max, deepest);
   if (deepest > BoxerMetrics::kLegsOverlap) mt.legs_overlap_s += dt;
   const int tl = b.bodies.body[b.bones.leg[0].thigh], tr = b.bodies.body[b.bones.leg[1].thigh];
   for (const eng::physics::Contact& c : d.contacts)
-    if ((c.body_a == tl && c.body_b == tr) || (c.body_a == tr && c.body_b == tl)) {
+    if (((c.body_a == tl && c.body_b == tr) || (c.body_a == tr && c.body_b == tl)) && eng::physics::is_touching(c)) {
       mt.thighs_touch_s += dt;
       break;
     }

@@ -153,6 +153,7 @@ void configure_boxer_control(World& w, Boxer& b) {
     q->out.contact_force.reserve(contacts);
     q->pts.reserve(contacts);
     q->hull.reserve(contacts);
+    q->in.separations.reserve(kMaxLegSeparations);
     const auto& skel = w.boxer_desc.skeleton;
     q->trunk.assign(skel.size(), 0);
     q->arm.assign(skel.size(), 0);

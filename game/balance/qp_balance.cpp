@@ -14,6 +14,7 @@
 #include "engine/control/servo/person_space.h"
 #include "engine/control/servo/world_pose.h"
 #include "engine/physics/dynamics.h"
+#include "engine/physics/narrowphase.h"
 #include "game/balance/balance_controller.h"
 #include "game/balance/com_support.h"
 #include "game/balance/stand_up.h"
@@ -60,6 +61,43 @@ void settle_after_return(eng::control::BalanceStepState& st, bool holding, bool 
   target = st.settle_target;
   v_d.setZero();
 }
+// The legs kept off each other (BalanceQpTuning::leg_clearance*): a separation task per point where a left-leg geom
+// comes within leg_clearance of a right-leg one. The shanks and feet do not collide and passed through each other in
+// crossed stances; the thighs collide (set_self_colliding) and pressed on each other. A soft task, not a collision:
+// the plan keeps the legs apart where the balance allows (the shanks colliding too cost the capture steps that cross
+// the stance leg: docs/decisions/balance-steps.md, tenth and fourteenth rounds).
+void add_leg_clearance(QpBalance& q, const eng::physics::Model& m, const eng::physics::Data& d, const Boxer& b) {
+  const BalanceQpTuning& tq = b.settings.tuning.qp;
+  const double weight = tq.leg_clearance_weight, gap = tq.leg_clearance, omega = tq.leg_clearance_omega;
+  if (q.leg_geoms[0].empty()) list_leg_geoms(b, q.leg_geoms);
+  if (weight <= 0.0) return;
+  if (!tq.leg_clearance_in_step && b.ctl.balance_steps.step.active && !b.ctl.balance_steps.step.returning) return;
+  const int thigh[2] = {b.bodies.body[b.bones.leg[0].thigh], b.bodies.body[b.bones.leg[1].thigh]};
+  eng::physics::ContactPoint c[eng::physics::kMaxContactsPerPair];
+  for (int ga : q.leg_geoms[0])
+    for (int gb : q.leg_geoms[1]) {
+      const eng::physics::Geom &A = m.geoms[ga], &B = m.geoms[gb];
+      if (!tq.leg_clearance_thighs && A.body == thigh[0] && B.body == thigh[1]) continue;
+      const int count = eng::physics::collide_shapes(A.shape, d.x[A.body] * A.local, B.shape, d.x[B.body] * B.local, gap, c,
+                                                     eng::physics::kMaxContactsPerPair);
+      for (int k = 0; k < count; ++k) {
+        const Eigen::Vector3d& n = c[k].normal;  // from a to b
+        const Eigen::Vector3d& p = c[k].position;
+        const Eigen::Vector3d va = d.v_body[A.body].tail<3>() + d.v_body[A.body].head<3>().cross(p);
+        const Eigen::Vector3d vb = d.v_body[B.body].tail<3>() + d.v_body[B.body].head<3>().cross(p);
+        const double acc = omega * omega * (gap + c[k].depth) - 2.0 * omega * n.dot(vb - va);
+        if (acc <= 0.0 || q.in.separations.size() >= size_t(kMaxLegSeparations)) continue;
+        eng::control::QpSeparationTask t;
+        t.body_a = A.body, t.body_b = B.body;
+        t.point_a = t.point_b = p;
+        t.normal = n;
+        t.acc = acc;
+        const double ma = m.bodies[A.body].mass, mb = m.bodies[B.body].mass;
+        t.weight = weight * ma * mb / (ma + mb);
+        q.in.separations.push_back(t);
+      }
+    }
+}
 }  // namespace
 
 // The balance QP's inputs for one boxer (balance_qp.h), solved, and its joint torques written to d.tau.
@@ -73,6 +111,7 @@ void settle_after_return(eng::control::BalanceStepState& st, bool holding, bool 
 //    weighted by the bone's servo inertia (heavy subtrees matter most, as eq. 3's gains scale with them).
 //  * Touching feet: their contact points held (balance_qp.h) and a strong orientation task (clip's tilt, own
 //    heading); swing feet: the ankle toward its step's target (PD, plan_steps); a planted foot that hovers is lowered.
+//  * The legs: kept off each other (add_leg_clearance), a separation task where a left-leg geom nears a right-leg one.
 // Measured against the PD balance layer (README): stand and 150 N pushes as good, larger pushes, every punch and
 // defence drill, tracking and the walk better.
 // Tuning: BalanceQpTuning (qp_balance.h); measurements docs/decisions/balance-qp-tuning.md.
@@ -397,6 +436,7 @@ void actuate(QpBalance& q, BalanceTick& tick) {
     }
   }
   for (int k = 0; k < 2; ++k) q.swing_prev[k] = !loaded[k] && !touching[k];
+  add_leg_clearance(q, m, d, b);
   // The solve's wall-clock cost, for the report only (boxers[i].qp.solve_us_median / p95); nothing reads it back.
   const auto t0 = std::chrono::steady_clock::now();
   // On fewer than three contact points there is no support polygon: the ground cannot give the com and momentum

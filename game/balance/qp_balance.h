@@ -100,7 +100,22 @@ struct BalanceQpTuning {
   int min_support_contacts = 3;       // fewer contact points in the plan: no support polygon ...
   double few_contacts_task_scale = 1e-2;  // ... and the com / momentum tasks priced this much lower
   int recovery_support_contacts = 2;  // ... but in a push's recovery (balance steps) from fewer than this only
+  // The legs kept off each other (actuate, add_leg_clearance): a left-leg geom within leg_clearance of a right-leg one
+  // gets a separation task, the two points' relative acceleration along their normal at leg_clearance_omega^2
+  // (leg_clearance + depth) - 2 leg_clearance_omega v_n (none where that is negative: already parting fast enough),
+  // priced leg_clearance_weight per kg of the pair's reduced mass. Not during a balance step's swing (the capture's
+  // cross-over must pass the stance leg; with it there, Yin's five on seeds 1-40 stood 185 of 200 at 8 s against 193).
+  // Measured: docs/decisions/balance-steps.md, sixteenth round. 0 = off.
+  double leg_clearance = 0.03;         // m
+  double leg_clearance_omega = 10.0;   // rad/s
+  double leg_clearance_weight = 300.0; // per kg (100: the bar's seed 7 left 394 N falls; 1000: 187 of 200 at 14 s)
+  bool leg_clearance_thighs = true;    // the thighs' pairs too (they also collide: set_self_colliding)
+  bool leg_clearance_in_step = false;  // during a balance step's swing too
 };
+
+// The leg clearance's separation tasks a tick at most (BalanceQpTuning::leg_clearance*; reserved by the world, so a
+// recovery's crossed legs allocate nothing): 3 x 3 leg geom pairs, 4 points each, with room.
+inline constexpr int kMaxLegSeparations = 64;
 
 // The controller's state and workspace (inputs rebuilt every tick, capacity kept).
 struct QpBalance {
@@ -120,6 +135,7 @@ struct QpBalance {
   int support_set = 0;  // which feet were planted last tick (bit 0 left, bit 1 right)
   bool swing_prev[2] = {false, false};  // the foot was swinging last tick (swing feed-forward)
   Eigen::Vector3d swing_target_prev[2] = {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
+  std::vector<int> leg_geoms[2];           // each leg's geoms (thigh first), listed on the first tick (leg clearance)
   std::vector<Eigen::Vector2d> pts, hull;  // scratch: contact points on the floor, their hull
   std::vector<Eigen::Vector2d> ground_hull;  // this tick's hull of every ground contact (com_acc_in_support)
   eng::core::LatencyHistogram solve_us;    // wall-clock cost of each solve (report only)

@@ -224,6 +224,19 @@ void balance_qp_solve(const physics::Model& m, const physics::Data& d, const Bal
     }
     add_task(3, t.acc - bias, t.weight);
   }
+  // Separation tasks: w (row qacc - target)^2 with row = normal^T (J_b - J_a), dense over the block (the two chains
+  // share the root's and the pelvis's DoFs, and neither contains the other).
+  for (const QpSeparationTask& t : in.separations) {
+    ws.row.setZero(n);
+    block_jacobian(m, d, t.body_b, t.point_b, b0, n, ws.J, ws.cols);
+    for (size_t a = 0; a < ws.cols.size(); ++a) ws.row[ws.cols[a]] += t.normal.dot(ws.J.block<3, 1>(3, int(a)));
+    block_jacobian(m, d, t.body_a, t.point_a, b0, n, ws.J, ws.cols);
+    for (size_t a = 0; a < ws.cols.size(); ++a) ws.row[ws.cols[a]] -= t.normal.dot(ws.J.block<3, 1>(3, int(a)));
+    const double target = t.acc - t.normal.dot(bias_point_acceleration(m, d, t.body_b, t.point_b) -
+                                               bias_point_acceleration(m, d, t.body_a, t.point_a));
+    H.noalias() += t.weight * ws.row * ws.row.transpose();
+    ws.g.noalias() += (t.weight * target) * ws.row;
+  }
   // Joint limits (BalanceQpParams::w_limit): the step's limit rows of this articulation, J sparse over the joint's DoFs
   // with J v = dC/dt (the row's Jdot v left out: the swing axis turns slowly).
   if (p.w_limit > 0.0) {

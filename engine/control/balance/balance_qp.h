@@ -17,8 +17,9 @@
 //       sum_i w_i |J_i qacc + Jdot_i v - a_i|^2 + eps |qacc|^2                      (tracking)
 //     + w_F |sum f_c - F_des|^2 + w_N |sum (p_c - com) x f_c - N_des|^2 + eps' |beta|^2   (ground reaction)
 // (a_i: each bone's desired world angular acceleration -- the inertial servo's eq. 3 as an acceleration --,
-// point accelerations, e.g. a swing foot, heavily weighted, zero acceleration of every contact point, and, near a
-// joint limit the step will enforce, the limit coordinate's acceleration back inside it (w_limit);
+// point accelerations, e.g. a swing foot, heavily weighted, two points' relative acceleration along a normal (two
+// legs kept apart), zero acceleration of every contact point, and, near a joint limit the step will enforce, the
+// limit coordinate's acceleration back inside it (w_limit);
 // F_des = m (a_com_des - g), Kudoh's com acceleration as a PD target; N_des the desired rate of the centroidal
 // angular momentum) subject to, exactly,
 //       M_root qacc + c_root = (J^T f)_root      (Newton-Euler of the whole body: the floating base is unactuated;
@@ -74,6 +75,17 @@ struct QpPointTask {
   Vec3 ref_point = Vec3::Zero();
 };
 
+// Desired relative acceleration, along one direction, of two points fixed to two bodies of the articulation (m/s^2):
+// normal . (a_b(point_b) - a_a(point_a)) = acc, one row. Neither body need be the other's ancestor (a left shank and a
+// right one): the row spans the union of their chains' DoFs.
+struct QpSeparationTask {
+  int body_a = 0, body_b = 0;
+  Vec3 point_a = Vec3::Zero(), point_b = Vec3::Zero();
+  Vec3 normal = Vec3::UnitX();  // unit, from a toward b
+  double acc = 0.0;
+  double weight = 1.0;
+};
+
 struct BalanceQpInput {
   int dof_begin = 0, dof_end = 0;  // the articulation's DoFs (first six: the free root)
   int root_body = 0;               // its root body (subtree for com / momentum)
@@ -82,10 +94,11 @@ struct BalanceQpInput {
   std::vector<QpContact> contacts;
   std::vector<QpAngularTask> angular;
   std::vector<QpPointTask> points;
+  std::vector<QpSeparationTask> separations;
   // Bodies whose joint limits the plan keeps off (BalanceQpParams::w_limit); empty: every joint of the articulation.
   std::vector<int> limit_bodies;
   void clear() {
-    contacts.clear(), angular.clear(), points.clear(), limit_bodies.clear();
+    contacts.clear(), angular.clear(), points.clear(), separations.clear(), limit_bodies.clear();
   }
 };
 
@@ -165,6 +178,7 @@ struct BalanceQp {
   Eigen::LLT<Eigen::Matrix<double, 6, 6>> llt_S;
   QpVecK beta, q, beta_fit, z, wk;  // wk: the NNLS gradient q - Q x
   QpVecN g, w, t0, tau_assist;
+  QpVecN row;    // a separation task's row over the block
   Eigen::Matrix<double, 6, 1> b;
   std::vector<Vec3> basis;
   // the active-set NNLS in beta

@@ -277,3 +277,49 @@ TEST(BalanceQp, AJointNearItsLimitIsPlannedToStopShortOfItOnlyWhileItApproaches)
   // A body not in BalanceQpInput::limit_bodies: its limits are not the plan's.
   EXPECT_NEAR(hinge_acc(1.0, 100.0, false), hinge_acc(1.0, 0.0, false), 1e-9);
 }
+
+TEST(BalanceQp, ASeparationTaskBetweenTwoSiblingLimbsIsMetAndSharedByBoth) {
+  // A 10 kg box in the air with two 2 kg arms pointing up from its top face, 0.1 m apart across y, each hinged about x
+  // (they swing toward and away from each other). One task: the tips' relative acceleration along +y (from the right
+  // arm's tip, a, to the left one's, b) 4 m/s^2. Neither arm is the other's ancestor: the plan's relative acceleration,
+  // recomputed from the physics' point Jacobians, is the asked one, and by symmetry the two arms share it (hinge
+  // accelerations equal and opposite); the root's recoil cancels.
+  Model m;
+  const int torso = m.add_body(make_body("torso", 0, JointType::Free, at({0, 0, 1.0}), 10.0, Vec3::Zero(),
+                                         box_inertia(10.0, Vec3(0.1, 0.1, 0.05))));
+  int arm[2] = {0, 0};
+  for (int k = 0; k < 2; ++k) {
+    Body a = make_body(k == 0 ? "right" : "left", torso, JointType::Hinge, at({0, k == 0 ? -0.05 : 0.05, 0.05}), 2.0,
+                       Vec3(0, 0, 0.2), box_inertia(2.0, Vec3(0.02, 0.02, 0.2)));
+    a.axis = Vec3::UnitX();
+    arm[k] = m.add_body(a);
+  }
+  m.finalize();
+  Data d = make_data(m);
+  kinematics_and_dynamics(m, d);
+  BalanceQpInput in;
+  in.dof_begin = 0, in.dof_end = m.nv, in.root_body = torso;
+  in.com_acc = m.gravity;  // falling freely
+  eng::control::QpSeparationTask t;
+  t.body_a = arm[0], t.body_b = arm[1];
+  t.point_a = d.x[arm[0]].apply(Vec3(0, 0, 0.4)), t.point_b = d.x[arm[1]].apply(Vec3(0, 0, 0.4));
+  t.normal = Vec3::UnitY(), t.acc = 4.0, t.weight = 100.0;
+  in.separations.push_back(t);
+  BalanceQp ws;
+  BalanceQpResult out;
+  eng::control::balance_qp_solve(m, d, in, BalanceQpParams{}, ws, out);
+  MatX Ja, Jb;
+  point_jacobian(m, d, arm[0], t.point_a, Ja);
+  point_jacobian(m, d, arm[1], t.point_b, Jb);
+  const Vec3 a_a = Ja * out.qacc + eng::control::bias_point_acceleration(m, d, arm[0], t.point_a);
+  const Vec3 a_b = Jb * out.qacc + eng::control::bias_point_acceleration(m, d, arm[1], t.point_b);
+  EXPECT_NEAR((a_b - a_a).dot(t.normal), 4.0, 0.04);
+  const double qa = out.qacc[m.bodies[arm[0]].v_index], qb = out.qacc[m.bodies[arm[1]].v_index];
+  EXPECT_GT(std::abs(qa), 1.0) << "the right arm moves too: its chain is in the task's row";
+  EXPECT_NEAR(qa, -qb, 1e-3 * std::abs(qa));
+  EXPECT_LT(out.root_residual, 1e-6);
+  // Without the task the arms stay (no other task asks them to move).
+  in.separations.clear();
+  eng::control::balance_qp_solve(m, d, in, BalanceQpParams{}, ws, out);
+  EXPECT_LT(std::abs(out.qacc[m.bodies[arm[1]].v_index]), 1e-6);
+}
