@@ -56,6 +56,13 @@ struct BoxerMetrics {
   int balance_steps = 0, return_steps = 0;  // balance QP: steps the balance took (balance_step.h), steps back to the stance
   int most_steps_in_recovery = 0;           // the longest multi-step recovery
   int late_landings = 0;  // balance steps set down by time, their sole not on a top (BalanceStepTuning::late)
+  // re-placements of a foot a recovery left on an edge, started (BalanceStepTuning::replace_edge_foot: the weight shift,
+  // then a return step, counted in return_steps, unless the shift is given up)
+  int replacements = 0;
+  // How far each landing's sole centre came down from where its step planned it (the last re-plan's foothold; m),
+  // summed, and the landings counted: [0] a balance step's (phase 1), [1] a return step's.
+  double landing_miss_sum[2] = {0.0, 0.0};
+  int landings[2] = {0, 0};
   double max_com_speed = 0.0;
   // The legs' clearance: of a boxer's own geoms only the thighs collide with each other (add_boxer), so a shank or a
   // foot swung through the stance leg passes through it with nothing but the balance QP's leg clearance (a soft task,

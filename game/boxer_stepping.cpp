@@ -235,6 +235,12 @@ void observe_push(const eng::physics::Model& m, const eng::physics::Data& d, Box
   st.push_have_vcom = true;
 }
 
+bool on_poor_foothold(const eng::physics::Data& d, const Arena& arena, const Boxer& b, int k) {
+  const eng::physics::Pose& x = d.x[b.bodies.body[b.bones.foot[k]]];
+  return !eng::control::foothold_ok(ground_of(arena), x.p.head<2>(), eng::control::heading_of(Eigen::Quaterniond(x.R)),
+                                    b.settings.tuning.step.foothold);
+}
+
 bool stance_can_fight(const eng::physics::Data& d, const Boxer& b) {
   const eng::control::BalanceStepTuning& t = b.settings.tuning.balance_step;
   const Eigen::Vector2d l = sole_centre(d, b, 0).head<2>(), r = sole_centre(d, b, 1).head<2>();
@@ -302,6 +308,8 @@ void take_balance_steps(const eng::physics::Model& m, const eng::physics::Data& 
     }
     if (down || s.elapsed > s.duration + t.late) {
       if (!down && !s.returning) ++b.metrics.late_landings;
+      b.metrics.landing_miss_sum[s.returning] += (sole[s.foot] - s.to).norm();
+      ++b.metrics.landings[s.returning];
       s.active = false;
       st.settled = 0.0;
     }
@@ -363,6 +371,24 @@ void take_balance_steps(const eng::physics::Model& m, const eng::physics::Data& 
           st.shifting = r;  // first the weight goes over the other foot (below), then the foot steps
           st.shift_time = 0.0;
           st.return_to = to;
+        } else if (t.replace_edge_foot && b.settings.stepping) {
+          // No return: a foot the recovery left on a poor foothold (an edge under its sole, by the clips' margins)
+          // steps onto the nearest good one, by the return's machinery (the weight shift, then the step), the foot
+          // farther from the com first.
+          for (int j : {r, 1 - r}) {
+            if (!on_poor_foothold(d, arena, b, j)) continue;
+            // Searched at the heading the return step lands with (the desired pose's foot), where its own search
+            // (the balance step's foothold) will find it good already.
+            const double land_yaw = eng::control::heading_of(b.scratch.fk_W[feet[j]]);
+            const Eigen::Vector2d ankle = sole[j] - Eigen::Rotation2Dd(land_yaw) * g.centre.head<2>();
+            const eng::control::Foothold fh = eng::control::find_foothold(ground, ankle, land_yaw, land_yaw, t.replace_foothold);
+            if (!fh.found || fh.shift.norm() < 0.01) continue;
+            st.shifting = j;
+            st.shift_time = 0.0;
+            st.return_to = sole[j] + fh.shift;
+            ++b.metrics.replacements;
+            break;
+          }
         }
         st.recovering = false;
         st.steps_in_recovery = 0;
@@ -395,8 +421,8 @@ void take_balance_steps(const eng::physics::Model& m, const eng::physics::Data& 
   if (!s.active) return;
   // The step overrides the clip's feet: the stepping foot swings to the step's target, the other stays planted.
   const int k = s.foot;
-  Eigen::Vector3d velocity;
-  const Eigen::Vector3d target = eng::control::balance_step_sole_target(s, t, &velocity);
+  Eigen::Vector3d velocity, acceleration;
+  const Eigen::Vector3d target = eng::control::balance_step_sole_target(s, t, &velocity, &acceleration);
   const Eigen::Quaterniond R(Eigen::AngleAxisd(s.yaw, Eigen::Vector3d::UnitZ()));
   eng::control::StepPlan& plan = b.ctl.step[k];
   plan.active = true;
@@ -405,6 +431,7 @@ void take_balance_steps(const eng::physics::Model& m, const eng::physics::Data& 
   plan.clip_z = plan.target.z();
   plan.has_velocity = true;
   plan.velocity = velocity;
+  plan.acceleration = acceleration;
   b.ctl.step[1 - k].active = false;
   swing[k] = true;
   swing[1 - k] = false;

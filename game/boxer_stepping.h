@@ -28,6 +28,9 @@ void observe_push(const eng::physics::Model& m, const eng::physics::Data& d, Box
 // that far left of the right's across the stance's heading (not crossed, not in line) and the two between min_gap
 // and max_reach apart. The return step's test (no return from such a stance), and the match AI's before footwork.
 bool stance_can_fight(const eng::physics::Data& d, const Boxer& b);
+// Foot k stands on a poor foothold: an edge of a higher top under its sole's core (foothold_ok, by the clips' margins,
+// StepTuning::foothold), at its actual place and heading. The re-placement's test (BalanceStepTuning::replace_edge_foot).
+bool on_poor_foothold(const eng::physics::Data& d, const Arena& arena, const Boxer& b, int k);
 // Balance steps (balance_step.h), after plan_steps: a step of the balance's own overrides the clip's feet (swing,
 // b.ctl.step) while it lasts; started when the capture point leaves the feet, or to return to the stance after.
 void take_balance_steps(const eng::physics::Model& m, const eng::physics::Data& d,

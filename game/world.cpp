@@ -292,7 +292,8 @@ eng::Result<std::unique_ptr<World>> make_world(const Options& o) {
     // The steps' foothold searches sorted now: the world's step allocates nothing (the first carried step of a
     // walk came after any warm-up).
     for (const eng::control::FootholdParams* p : {&b.settings.tuning.step.foothold, &b.settings.tuning.step.carry_foothold,
-                                                  &b.settings.tuning.balance_step.foothold})
+                                                  &b.settings.tuning.balance_step.foothold,
+                                                  &b.settings.tuning.balance_step.replace_foothold})
       eng::control::prepare_foothold_search(*p);
   }
   return w;
@@ -447,12 +448,19 @@ nlohmann::json world_report(const World& w) {
                       {"return_steps", m.return_steps},
                       {"most_steps_in_recovery", m.most_steps_in_recovery},
                       {"late_landings", m.late_landings},
+                      {"replacements", m.replacements},
+                      {"balance_step_miss_mean_m", m.landings[0] ? m.landing_miss_sum[0] / m.landings[0] : 0.0},
+                      {"return_step_miss_mean_m", m.landings[1] ? m.landing_miss_sum[1] / m.landings[1] : 0.0},
                       {"legs_overlap_max_m", m.legs_overlap_max},
                       {"legs_overlap_s", m.legs_overlap_s},
                       {"thighs_touch_s", m.thighs_touch_s},
                       // On its feet at the end in a stance it can fight from (the return step's test: not crossed, not in
                       // line; false once fallen).
                       {"stance_can_fight_end", !b.limp && !m.fell && stance_can_fight(w.data, b)},
+                      // Its feet on a poor foothold at the end (an edge under the sole, by the clips' margins; 0-2, on
+                      // its feet only).
+                      {"feet_on_edge_end", b.limp || m.fell ? 0 : int(on_poor_foothold(w.data, w.arena, b, 0)) +
+                                                                    int(on_poor_foothold(w.data, w.arena, b, 1))},
                       {"fell_pelvis_m", {m.fell_pelvis.x(), m.fell_pelvis.y(), m.fell_pelvis.z()}},
                       {"fell_reason", m.fell_reason},
                       {"time_upright_s", m.time_upright},

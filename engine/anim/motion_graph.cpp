@@ -288,6 +288,18 @@ void MotionGraph::build(const std::vector<Clip>& cl, const GraphOptions& opt, co
 GraphWalker::GraphWalker(const MotionGraph& g, uint64_t seed, const std::string& start_clip)
     : g_(&g), rng_(seed), home_(g.clip_index(g.content.home_clip)) {
   clip_ = std::max(0, g.clip_index(start_clip.empty() ? g.content.home_clip : start_clip));
+  // The plans' scratch at its full size now: the first request_clip came in a graph walk's measured stretch (walk seed
+  // 3, once its carried steps landed where planned) and its arrays' first growth was the step's only allocation. The
+  // heap holds at most one entry per edge relaxed, plus the source.
+  const size_t N = g.nodes.size();
+  size_t E = 1;
+  for (const auto& es : g.edges) E += es.size();
+  target_.reserve(N);
+  plan_target_.reserve(N);
+  dist_.reserve(N);
+  prev_.reserve(N);
+  heap_.reserve(E);
+  plan_.reserve(N);
 }
 
 double GraphWalker::uniform() { return static_cast<double>(rng_() >> 11) * (1.0 / 9007199254740992.0); }

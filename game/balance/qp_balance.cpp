@@ -421,12 +421,21 @@ void actuate(QpBalance& q, BalanceTick& tick) {
       if (!loaded[k] && q.swing_prev[k]) v_ff = (ff_point - q.swing_target_prev[k]) / dt;
       // A balance step (balance_step.h) swings faster than the clip's and is tracked more stiffly.
       const bool quick = b.ctl.balance_steps.step.active && b.ctl.balance_steps.step.foot == k;
-      if (step.has_velocity) v_ff = step.velocity;  // a balance or carried step: its path's rate (no re-plan jumps)
+      // A balance or carried step: its path's rate (no re-plan jumps) and its horizontal acceleration, but a balance
+      // step's own (phase 1) swing's (BalanceQpTuning::swing_acc_feed_forward).
+      Eigen::Vector3d a_ff = Eigen::Vector3d::Zero();
+      if (step.has_velocity) {
+        v_ff = step.velocity;
+        const bool phase1 = quick && !b.ctl.balance_steps.step.returning;
+        const double share = phase1 ? tq.balance_step_acc_feed_forward : tq.swing_acc_feed_forward;
+        a_ff = share * Eigen::Vector3d(step.acceleration.x(), step.acceleration.y(), 0.0);
+      }
       const double max_v = quick ? tq.balance_step_speed : tq.max_swing_speed;
       if (v_ff.norm() > max_v) v_ff *= max_v / v_ff.norm();
       q.swing_target_prev[k] = ff_point;
       const double sw = quick ? tq.balance_step_omega : wn, skp = sw * sw, skd = 2.0 * sw;
       t.acc = (quick ? skp : kp) * (target - t.point) + (quick ? skd : kd) * ((loaded[k] ? Eigen::Vector3d::Zero() : v_ff) - v);
+      if (!loaded[k]) t.acc += a_ff;
       t.weight = tq.swing_weight * desc.bones[feet[k]].mass;
       if (quick && tq.balance_step_relative) t.ref_body = pelvis, t.ref_point = d.x[pelvis].p;
       in.points.push_back(t);

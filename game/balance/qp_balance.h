@@ -36,6 +36,17 @@ struct BalanceQpTuning {
   double max_swing_speed = 3.0;       // m/s, the swing foot's feed-forward velocity bound
   double balance_step_omega = 25.0;   // rad/s, a balance step's swing tracked this stiffly (the servo's 15: landed late)
   double balance_step_speed = 4.5;    // m/s, its feed-forward velocity bound
+  // A carried or return step's path acceleration (balance_step_sole_target), horizontal, as the swing task's
+  // feed-forward, times this. Without it the PD trails the ease's stop by a / omega^2 and the sole ran on past its
+  // landing: a return step landed 3.4 cm from its plan (median), 0.4 cm with it (Yin's five pushes, seeds 1-96). Not
+  // the set-down's vertical part: fed forward, the sole met the top before its horizontal travel ended (a balance
+  // step's landing 15 cm short at the 10th percentile).
+  double swing_acc_feed_forward = 1.0;
+  // ... and a balance step's own swing (phase 1), times this: none. Its landing margins were tuned on the overshoot
+  // (it landed 4 cm beyond its plan, median); fed forward, a long swing re-planned farther out (0.9 m in 0.26 s), the
+  // foot behind its path, was braked short of it and forward pushes fell (91 of 96 stood, against 96); braked only
+  // when not behind, sideways pushes stood 362 of 420 against 372 (docs/decisions/balance-steps.md, seventeenth round).
+  double balance_step_acc_feed_forward = 0.0;
   // the com / momentum tasks' price during its swing (1: fewer pushes survived; 0.1 before the com fell as the LIP)
   double balance_step_com_scale = 0.3;
   bool balance_step_relative = true;   // its swing foot's task relative to the pelvis (QpPointTask::ref_body)

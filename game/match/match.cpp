@@ -526,6 +526,7 @@ void match_setup(World& w) {
     b.settings.root_params.knockout_threshold = 1e9;
     b.settings.root_params.stun_time = mt.tuning.recovery_delay;
     b.settings.root_params.recovery_rate = mt.tuning.recovery_rate;
+    b.settings.tuning.balance_step.replace_edge_foot = mt.tuning.replace_edge_feet;
     // The fight's balance: Kudoh's priorities, the trunk held upright over the com (balance_qp.h BalanceQpTuning).
     if (w.options.priorities != "off") {
       b.settings.tuning.qp.trunk_weight = mt.tuning.trunk_weight;

@@ -75,6 +75,11 @@ struct MatchTuning {
   // at the footwork's cadence (one step per 2 s). Without it the rocked boxer ended out of reach and the referee
   // brought them back (docs/decisions/footwork.md).
   double press_for = 4.0;
+  // The balance's re-placement of a foot a recovery left on an edge (BalanceStepTuning::replace_edge_foot): not in the
+  // fight. There the footwork's carried steps put the feet on footholds of their own every few seconds, and the
+  // re-placements' weight shifts and steps (88 more return steps) kept the boxers from closing in: matches on seeds
+  // 1-100, 49 apart resets against 20, falls without a hit 10 against 7 (docs/decisions/balance-steps.md).
+  bool replace_edge_feet = false;
   // The boxers' balance QP priorities in the fight (BalanceQpTuning::trunk_weight, com_weight; 1 / 1 elsewhere).
   double trunk_weight = 100.0;
   double com_weight = 30.0;

@@ -229,15 +229,21 @@ double step_reach_drop(const Eigen::Vector3d& hip, const Eigen::Vector3d& ankle,
   return std::clamp(hip.z() - ankle.z() - below, 0.0, max_drop);
 }
 
-Eigen::Vector3d balance_step_sole_target(const BalanceStep& s, const BalanceStepTuning& t, Eigen::Vector3d* velocity) {
+Eigen::Vector3d balance_step_sole_target(const BalanceStep& s, const BalanceStepTuning& t, Eigen::Vector3d* velocity,
+                                         Eigen::Vector3d* acceleration) {
   const double T = std::max(s.duration, 1e-6), u = std::clamp(s.elapsed / T, 0.0, 1.0);
-  auto ease = [](double a, double b, double x) {  // C1 ease from 0 at x = a to 1 at x = b
+  // The C1 ease (smoothstep) from 0 at x = a to 1 at x = b, and its first and second derivatives in x.
+  auto ease = [](double a, double b, double x) {
     const double v = std::clamp((x - a) / (b - a), 0.0, 1.0);
     return v * v * (3.0 - 2.0 * v);
   };
-  auto ease_rate = [](double a, double b, double x) {  // its derivative in x
+  auto ease_rate = [](double a, double b, double x) {
     const double v = (x - a) / (b - a);
     return v <= 0.0 || v >= 1.0 ? 0.0 : 6.0 * v * (1.0 - v) / (b - a);
+  };
+  auto ease_curvature = [](double a, double b, double x) {
+    const double v = (x - a) / (b - a);
+    return v <= 0.0 || v >= 1.0 ? 0.0 : 6.0 * (1.0 - 2.0 * v) / ((b - a) * (b - a));
   };
   // Lift first, travel, set down: the sole clears the path's highest top before it moves over it.
   const double e = ease(s.travel_from, 0.85, u);
@@ -247,13 +253,22 @@ Eigen::Vector3d balance_step_sole_target(const BalanceStep& s, const BalanceStep
   const bool rising = u < 0.5;
   const double z = rising ? s.from_top + (clear - s.from_top) * ease(0.0, s.rise_until, u)
                           : clear + (s.to_top - t.press - clear) * ease(0.7, 1.0, u);
+  const bool moving = s.elapsed < T;
+  const double dz = rising ? clear - s.from_top : s.to_top - t.press - clear;  // the height's change in this half
+  const double za = rising ? 0.0 : 0.7, zb = rising ? s.rise_until : 1.0;
   if (velocity) {
-    const bool moving = s.elapsed < T;
     const Eigen::Vector2d vxy = moving ? Eigen::Vector2d(d_de * ease_rate(s.travel_from, 0.85, u) / T) : Eigen::Vector2d::Zero();
-    const double vz = !moving ? 0.0
-                      : rising ? (clear - s.from_top) * ease_rate(0.0, s.rise_until, u) / T
-                               : (s.to_top - t.press - clear) * ease_rate(0.7, 1.0, u) / T;
+    const double vz = moving ? dz * ease_rate(za, zb, u) / T : 0.0;
     *velocity = Eigen::Vector3d(vxy.x(), vxy.y(), vz);
+  }
+  if (acceleration) {
+    // d2/dt2 of path(e(u)): the Bezier's second derivative 2 (from - 2 via + to) times e'^2, plus its tangent times e''.
+    const Eigen::Vector2d via = 0.5 * (s.from + s.to) + s.bow;
+    const Eigen::Vector2d d2_de2 = 2.0 * (s.from - 2.0 * via + s.to);
+    const double er = ease_rate(s.travel_from, 0.85, u), ec = ease_curvature(s.travel_from, 0.85, u);
+    const Eigen::Vector2d axy = moving ? Eigen::Vector2d((d2_de2 * er * er + d_de * ec) / (T * T)) : Eigen::Vector2d::Zero();
+    const double az = moving ? dz * ease_curvature(za, zb, u) / (T * T) : 0.0;
+    *acceleration = Eigen::Vector3d(axy.x(), axy.y(), az);
   }
   return Eigen::Vector3d(xy.x(), xy.y(), z);
 }

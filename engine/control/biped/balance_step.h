@@ -71,6 +71,10 @@ struct BalanceStepTuning {
   // balance step failed (right 394 N, seed 3: fell at 9.8 s). Yin's five pushes, seeds 1-96, 14 s: 442 -> 447 of 480
   // stand, 10 returns changed, none fell that stood (docs/decisions/balance-steps.md, fifteenth round).
   bool return_onto_platform = true;
+  bool replace_edge_foot = true;  // re-place a foot left on a poor foothold where no return is taken (boxer_stepping.cpp)
+  // ... onto one good by both the clips' margins (the test of a poor one: the core 1.5 cm inside the top's sides) and
+  // the balance step's clearance (its landing's search then finds it good as it is)
+  FootholdParams replace_foothold = {.side_margin = 0.015, .clearance = 0.05, .sole = {}};
   // m, it lifts once the capture point is this far inside the other sole. 4 cm was not reached by a fifth of the
   // shifts: the com came to rest 1-4 cm short of it and the shift was given up (Yin's pushes, seeds 1-40). 2 cm with
   // the com still moving (0.35 m/s, before return_lift_speed) ran off the stance toe's edge (match seed 19 with the
@@ -215,7 +219,10 @@ double step_reach_drop(const Eigen::Vector3d& hip, const Eigen::Vector3d& ankle,
 // over the path's highest top by `lift` mid-swing, set down `press` into the landing top at the end.
 // Its velocity (the path's derivative at the elapsed time): the swing's feed-forward. (Differenced tick to tick
 // instead, a re-planned landing's jump read as a 4-5 m/s kick and the foot overshot by 40 cm.)
+// Its acceleration (the second derivative): the feed-forward's other half. A PD on position and velocity alone trails a
+// reference that accelerates by a / omega^2; the ease stops the sole in the swing's last 15 %, at 50-100 m/s^2, and
+// without it the foot ran on 3 cm past its landing (median, Yin's five pushes; docs/decisions/balance-steps.md).
 Eigen::Vector3d balance_step_sole_target(const BalanceStep& s, const BalanceStepTuning& t,
-                                         Eigen::Vector3d* velocity = nullptr);
+                                         Eigen::Vector3d* velocity = nullptr, Eigen::Vector3d* acceleration = nullptr);
 
 }  // namespace eng::control

@@ -65,7 +65,7 @@ void advance_step(StepPlan& st, const Eigen::Vector3d& ankle_placed, const Eigen
     BalanceStepTuning swing;
     swing.lift = t.carry_lift;
     swing.press = t.carry_press;
-    const Eigen::Vector3d c = balance_step_sole_target(st.path, swing, &st.velocity);
+    const Eigen::Vector3d c = balance_step_sole_target(st.path, swing, &st.velocity, &st.acceleration);
     st.target = c - Eigen::AngleAxisd(st.path.yaw, Eigen::Vector3d::UnitZ()) * g.sole_offset();
     st.clip_z = st.target.z();
     st.has_velocity = true;

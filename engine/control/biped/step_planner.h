@@ -82,8 +82,9 @@ struct StepPlan {
   Eigen::Vector3d target = Eigen::Vector3d::Zero();
   double clip_z = 0.0;
   bool step_up = false;  // the landing top is higher than the one the foot leaves (no shuffle, it lifts over)
-  bool has_velocity = false;  // a balance or carried step: the target's velocity, from its path (world, m/s)
+  bool has_velocity = false;  // a balance or carried step: the target's velocity, from its path (world, m/s) ...
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
+  Eigen::Vector3d acceleration = Eigen::Vector3d::Zero();  // ... and its acceleration (m/s^2)
   bool carried = false;  // a carried step (StepTuning::carry): the target is path's, and the step owns the foot ...
   bool landed = false;   // ... until it touches down; then the clip's swing is ignored until it ends
   BalanceStep path;

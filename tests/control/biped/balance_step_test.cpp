@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "control/biped/boxes.h"
@@ -203,6 +204,35 @@ TEST(BalanceStepSoleTarget, VelocityIsThePathsDerivative) {
     const Eigen::Vector3d p1 = eng::control::balance_step_sole_target(s, t);
     EXPECT_NEAR(((p1 - p0) / h - v).norm(), 0.0, 1e-4) << "at " << e << " s";
   }
+}
+
+// The acceleration feed-forward is the velocity's derivative, on a bent path (the Bezier's curvature term) and through
+// the lift and the set-down; it is zero once the swing's time is up (the foot is held where it landed).
+TEST(BalanceStepSoleTarget, AccelerationIsTheVelocitysDerivative) {
+  eng::control::BalanceStep s;
+  s.from = Vector2d(0.0, 0.0);
+  s.to = Vector2d(0.4, 0.1);
+  s.bow = Vector2d(-0.05, 0.12);
+  s.from_top = 0.1, s.to_top = 0.15, s.path_top = 0.15, s.duration = 0.3;
+  BalanceStepTuning t;
+  const double h = 1e-6;
+  double peak = 0.0;
+  for (double e : {0.02, 0.06, 0.12, 0.2, 0.23, 0.25, 0.29}) {
+    s.elapsed = e;
+    Eigen::Vector3d v0, a;
+    eng::control::balance_step_sole_target(s, t, &v0, &a);
+    s.elapsed = e + h;
+    Eigen::Vector3d v1;
+    eng::control::balance_step_sole_target(s, t, &v1);
+    EXPECT_NEAR(((v1 - v0) / h - a).norm(), 0.0, 1e-3 * (1.0 + a.norm())) << "at " << e << " s";
+    peak = std::max(peak, a.head<2>().norm());
+  }
+  // The ease's stop is sharp: 6 L / (0.75 T)^2 at its ends, about 50 m/s^2 here.
+  EXPECT_GT(peak, 20.0);
+  s.elapsed = 0.31;
+  Eigen::Vector3d v, a;
+  eng::control::balance_step_sole_target(s, t, &v, &a);
+  EXPECT_EQ(a, Eigen::Vector3d::Zero());
 }
 
 // The landing's side of the stance foot follows the capture point: a forward step by the foot 5 cm behind the stance
