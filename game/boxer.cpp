@@ -8,6 +8,7 @@
 #include "engine/control/servo/person_space.h"
 #include "engine/control/servo/world_pose.h"
 #include "engine/core/stage_laps.h"
+#include "engine/physics/dynamics.h"
 #include "game/boxer_stepping.h"
 
 namespace boxing {
@@ -258,7 +259,7 @@ void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const en
   actual.omega_a = &b.scratch.omega_a;
   const int pelvis = b.bodies.body[0];
   actual.root_position = d.x[pelvis].p;
-  actual.root_velocity = d.v_body[pelvis].tail<3>() + d.v_body[pelvis].head<3>().cross(d.x[pelvis].p);
+  actual.root_velocity = eng::physics::point_velocity(d, pelvis, d.x[pelvis].p);
   eng::control::Wrench help{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
   // Look ahead one servo tick (the paper's delta) for omega_d.
   // Person (egocentric) space leaves the root's heading free: the desired root takes the pelvis's actual heading

@@ -51,6 +51,12 @@ void solve_ltdl_multi(const Model& m, const MatX& LD, double* X, int nrhs, int l
 void point_jacobian(const Model& m, const Data& d, int body, const Vec3& world_point, MatX& J);
 // body_jacobian: 6 x nv, rows [angular (world); linear velocity of the body-fixed point (world)].
 void body_jacobian(const Model& m, const Data& d, int body, const Vec3& world_point, MatX& J);
+// Velocity of the point fixed to `body` that is at world_point now: v_body's linear part (the motion of the body-fixed
+// point at the world origin) plus omega x world_point (Featherstone: a motion vector's shift of reference point).
+inline Vec3 point_velocity(const Data& d, int body, const Vec3& world_point) {
+  const Vec6& v = d.v_body[body];
+  return v.tail<3>() + v.head<3>().cross(world_point);
+}
 // com of the subtree rooted at root_body (root_body = 0: everything).
 Vec3 subtree_com(const Model& m, const Data& d, int root_body);
 // 3 x nv Jacobian of subtree_com.

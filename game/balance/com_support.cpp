@@ -1,5 +1,6 @@
 #include "game/balance/com_support.h"
 
+#include "engine/physics/dynamics.h"
 #include "game/boxer.h"
 
 namespace boxing {
@@ -14,7 +15,7 @@ ComAndSupport com_and_support(const eng::physics::Data& d, const eng::assets::Ch
     const double mi = desc.bones[i].mass;
     const Eigen::Vector3d c = d.com_world[body];
     r.com_a += mi * c;
-    r.vcom += mi * (d.v_body[body].tail<3>() + d.v_body[body].head<3>().cross(c));
+    r.vcom += mi * eng::physics::point_velocity(d, body, c);
     r.com_d += mi * (Pd[i] + Wd[i] * desc.bones[i].com);
   }
   r.com_a /= M, r.vcom /= M, r.com_d /= M;

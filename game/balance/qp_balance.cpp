@@ -83,8 +83,8 @@ void add_leg_clearance(QpBalance& q, const eng::physics::Model& m, const eng::ph
       for (int k = 0; k < count; ++k) {
         const Eigen::Vector3d& n = c[k].normal;  // from a to b
         const Eigen::Vector3d& p = c[k].position;
-        const Eigen::Vector3d va = d.v_body[A.body].tail<3>() + d.v_body[A.body].head<3>().cross(p);
-        const Eigen::Vector3d vb = d.v_body[B.body].tail<3>() + d.v_body[B.body].head<3>().cross(p);
+        const Eigen::Vector3d va = eng::physics::point_velocity(d, A.body, p);
+        const Eigen::Vector3d vb = eng::physics::point_velocity(d, B.body, p);
         const double acc = omega * omega * (gap + c[k].depth) - 2.0 * omega * n.dot(vb - va);
         if (acc <= 0.0 || q.in.separations.size() >= size_t(kMaxLegSeparations)) continue;
         eng::control::QpSeparationTask t;
@@ -380,7 +380,7 @@ void actuate(QpBalance& q, BalanceTick& tick) {
     t.body = b.bodies.body[aim.glove];
     const auto& xg = d.x[t.body];
     t.point = xg.p + xg.R * desc.bones[aim.glove].com;
-    const Eigen::Vector3d v = d.v_body[t.body].tail<3>() + d.v_body[t.body].head<3>().cross(t.point);
+    const Eigen::Vector3d v = eng::physics::point_velocity(d, t.body, t.point);
     const Eigen::Vector3d to = aim.target - t.point;
     const double dist = to.norm();
     const Eigen::Vector3d v_d = dist > 1e-9 ? Eigen::Vector3d(to / dist * std::min(aim.strike_speed, aim.strike_rate * dist))
@@ -407,7 +407,7 @@ void actuate(QpBalance& q, BalanceTick& tick) {
       eng::control::QpPointTask t;
       t.body = fb;
       t.point = d.x[fb].p;
-      const Eigen::Vector3d v = d.v_body[fb].tail<3>() + d.v_body[fb].head<3>().cross(t.point);
+      const Eigen::Vector3d v = eng::physics::point_velocity(d, fb, t.point);
       // A planted-but-hovering foot aims tq.land below where it is (it comes down onto the crate).
       // A swing foot aims at its step's target (plan_steps: the clip's ankle, moved onto a good foothold).
       const eng::control::StepPlan& step = b.ctl.step[k];

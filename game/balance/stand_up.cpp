@@ -1,5 +1,6 @@
 #include "game/balance/stand_up.h"
 
+#include "engine/physics/dynamics.h"
 #include "engine/physics/step.h"
 #include "game/balance/balance_controller.h"
 #include "game/boxer.h"
@@ -25,7 +26,7 @@ void actuate_stand_up(BalanceTick& tick, const StandUpTuning& t) {
   const eng::control::Wrench w = full.compute(
       t.assist, b.control_body.I_eff[0], b.control_body.total_mass, b.desired.pose.rotation[0], b.scratch.W_a[0],
       b.scratch.omega_a[0], b.desired.pose.root_position, d.x[pelvis].p,
-      d.v_body[pelvis].tail<3>() + d.v_body[pelvis].head<3>().cross(d.x[pelvis].p));
+      eng::physics::point_velocity(d, pelvis, d.x[pelvis].p));
   b.ctl.root_torque = w.torque;
   b.ctl.root_force = w.force + Eigen::Vector3d(0.0, 0.0, t.weight_share * b.control_body.total_mass * 9.81);
   if (b.ctl.root_force.norm() > t.assist.max_force) b.ctl.root_force *= t.assist.max_force / b.ctl.root_force.norm();

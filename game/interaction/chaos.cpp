@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "engine/physics/dynamics.h"
 #include "game/world.h"
 
 namespace boxing {
@@ -53,10 +54,7 @@ void health_after_step(World& w) {
     ++h.non_finite_steps;
     return;
   }
-  auto speed_of = [&](int b) {
-    const auto& v = d.v_body[b];  // [omega; velocity of the point at the world origin]
-    return (v.tail<3>() + v.head<3>().cross(d.com_world[b])).norm();
-  };
+  auto speed_of = [&](int b) { return eng::physics::point_velocity(d, b, d.com_world[b]).norm(); };
   if (h.crates_top < 0.0)
     for (const Crate& cr : w.arena.crates) h.crates_top = std::max(h.crates_top, cr.center.z() + cr.half_extents.z());
   auto inside = [&](const Eigen::Vector3d& c) {

@@ -43,8 +43,7 @@ Eigen::Vector3d bone_centre(const World& w, const Boxer& b, int bone) {
 }
 
 Eigen::Vector3d body_velocity_at(const World& w, int body, const Eigen::Vector3d& p) {
-  const auto& v = w.data.v_body[body];
-  return v.tail<3>() + v.head<3>().cross(p);
+  return eng::physics::point_velocity(w.data, body, p);
 }
 
 // The boxer's facing in the world (the pelvis's forward axis, +X of the bone, on the floor; unit).
