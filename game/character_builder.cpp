@@ -56,10 +56,11 @@ CharacterBodies add_character(eng::physics::Model& model, const eng::assets::Cha
   return out;
 }
 
-void set_self_colliding(eng::physics::Model& model, const CharacterBodies& c, std::initializer_list<int> bones) {
+void set_self_colliding(eng::physics::Model& model, const CharacterBodies& c, std::initializer_list<int> bones,
+                        bool on) {
   for (int bone : bones)
     for (int g = c.first_geom[bone]; g < c.first_geom[bone] + c.geom_count[bone]; ++g)
-      model.geoms[g].self_collide = true;
+      model.geoms[g].self_collide = on;
 }
 
 void set_character_pose(const eng::physics::Model& model, eng::physics::Data& data, const CharacterBodies& c,

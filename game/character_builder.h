@@ -25,7 +25,8 @@ CharacterBodies add_character(eng::physics::Model& model, const eng::assets::Cha
 // The geoms of `bones` (skeleton indices) collide with each other; the character's other geoms still collide with none
 // of its own (Geom::self_collide: a pair within one articulation collides only if both geoms have it; a parent and
 // its child never do).
-void set_self_colliding(eng::physics::Model& model, const CharacterBodies& c, std::initializer_list<int> bones);
+void set_self_colliding(eng::physics::Model& model, const CharacterBodies& c, std::initializer_list<int> bones,
+                        bool on = true);
 
 // Sets the articulation's coordinates to a pose: root world position/orientation and per-bone parent-space
 // rotations (ball joints take the rotation, hinges its angle about the axis, fixed joints nothing).

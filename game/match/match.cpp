@@ -98,13 +98,16 @@ void knock_down(World& w, int k, const Eigen::Vector3d& push_dir, const char* re
 
 // A boxer getting up passes through its opponent (its geoms' collision mask leaves the other boxer's group out):
 // rising where it fell, into a standing opponent, it stuck crouched against him (seeds 2, 7, 9: not up in 10 s).
-// Nobody punches a downed boxer, so no hit is lost. World::model's masks are read by every step's collision.
+// Nobody punches a downed boxer, so no hit is lost. Its thighs pass through each other too (getup_thighs_pass).
+// World::model's masks and self-collision flags are read by every step's collision.
 void pass_through_opponent(World& w, int k, bool on) {
   const Boxer& b = w.boxers[k];
   const uint32_t other_group = 2u << w.boxers[1 - k].index;  // add_boxer's group
   for (size_t i = 0; i < b.bodies.first_geom.size(); ++i)
     for (int g = b.bodies.first_geom[i]; g < b.bodies.first_geom[i] + b.bodies.geom_count[i]; ++g)
       w.model.geoms[g].mask = on ? ~other_group : 0xffffffffu;
+  if (w.match.tuning.getup_thighs_pass)
+    set_self_colliding(w.model, b.bodies, {b.bones.leg[0].thigh, b.bones.leg[1].thigh}, !on);  // add_boxer's pair
 }
 
 // How far the boxer's lowest geom point is below the crate top (or the floor) under it (m; < 0: all clear), for the
@@ -440,7 +443,14 @@ void referee(World& w) {
       const bool up = cl && cl->has_tag("guard") && pelvis_height(w, b) >= tu.up_height * s.standing_height &&
                       b.ctl.contacts.support[0] && b.ctl.contacts.support[1] && speed < tu.still_speed;
       f.settled = up ? f.settled + dt : 0.0;
-      if (f.settled >= tu.settle_time) {
+      if (f.settled <= 0.0 && t - s.since > tu.stand_up_give_up) {
+        // Given up: down again, limp; lying still, the Down branch above starts the stand-up anew (the same GetUp:
+        // its assist time and the count run on).
+        boxer_state_enter(s, BoxerState::Down, t, "stand-up given up");
+        b.ctl.root_spring.set_consciousness(0.0);
+        f.still = 0.0;
+        ++g.retries;
+      } else if (f.settled >= tu.settle_time) {
         boxer_state_enter(s, BoxerState::Guard, t, "up");
         b.ctl.gain_scale = 1.0;
         g.up_at = t;
@@ -689,7 +699,8 @@ nlohmann::json match_report(const World& w) {
                       {"reset_lift_m", g.reset_lift},
                       {"reset_feet_off_m", g.reset_feet_off},
                       {"root_assist_force_rms_n", g.assist_time > 0 ? std::sqrt(g.assist_force_sq_dt / g.assist_time) : 0.0},
-                      {"stand_up_s", g.assist_time}});
+                      {"stand_up_s", g.assist_time},
+                      {"stand_up_retries", g.retries}});
   auto pair = [&mt](auto get) { return nlohmann::json::array({get(mt.fighter[0]), get(mt.fighter[1])}); };
   std::string result = mt.result;
   if (result.empty()) {

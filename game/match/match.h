@@ -65,6 +65,15 @@ struct MatchTuning {
   double settle_time = 0.5;          // s up and still before the fight goes on
   double after_count = 0.75;         // consciousness at least this once up from a knockdown
   double neutral_corner_within = 1.6;  // m, pelvis to pelvis: at a get-up's start a standing opponent this close goes to its mark
+  // A boxer getting up: its thighs pass through each other, as they pass through the opponent (pass_through_opponent).
+  // Colliding, a leg the get-up left behind the other caught on its thigh as the guard's stance swung it forward,
+  // and rose along it until it stood straight out behind, the boxer on one foot held by the root assist to the end of
+  // the run: 5 of matches 1-100 (seeds 1, 5, 73, 80, 98; 49-169 s), and match 13's get-up took 65.7 s. Passing:
+  // none, the longest get-up 6.0 s (docs/decisions/match-fight.md).
+  bool getup_thighs_pass = true;
+  // s in the stand-up without getting up: it is given up, the boxer sinks back (down, limp) and starts it again (the
+  // stand-up is not a balance the body can always finish from where it got to; a retry starts it from the ground).
+  double stand_up_give_up = 8.0;
   double apart_time = 2.0;           // s both out of reach before the referee brings them back to their marks
   double step_in_after_hit = 2.0;    // s after a landed hit before the AI steps in (footwork) again
   // A hard hit short of a knockdown rocks the boxer back: at this much damage or more the stagger clip (two steps
@@ -111,6 +120,7 @@ struct GetUp {
   // Up: placed back on its mark (back_to_marks): how far it was lifted out of the crates there, and how far (floor
   // plane) the farther ankle stands from where it stood at the start (the clip's stance fitted to the same crates).
   double reset_lift = 0.0, reset_feet_off = 0.0;  // m
+  int retries = 0;  // stand-ups given up and started again (MatchTuning::stand_up_give_up)
 };
 
 // What the player asks of a boxer (keys, game/app.cpp): a punch, a defence or a step; taken by the motion graph like
