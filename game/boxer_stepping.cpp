@@ -312,6 +312,10 @@ void take_balance_steps(const eng::physics::Model& m, const eng::physics::Data& 
       ++b.metrics.landings[s.returning];
       s.active = false;
       st.settled = 0.0;
+      if (s.returning && t.replace_edge_foot && st.follow_ups < t.follow_ups && !st.recovering) {
+        st.follow_up = true;
+        ++st.follow_ups;
+      }
     }
   } else {
     // The feet's contact hull and how far the capture point is out of it.
@@ -338,14 +342,17 @@ void take_balance_steps(const eng::physics::Model& m, const eng::physics::Data& 
                                        land.duration, ground, g, t.foothold);
       ++st.steps_in_recovery;
       st.recovering = true;
+      st.follow_up = false;
+      st.follow_ups = 0;
       ++b.metrics.balance_steps;
       b.metrics.most_steps_in_recovery = std::max(b.metrics.most_steps_in_recovery, st.steps_in_recovery);
-    } else if (st.recovering) {
+    } else if (st.recovering || st.follow_up) {
       // PHASE 2 (the QP's com task over the new support) until the com has all but stopped; then PHASE 3: the foot
       // farther from the com steps back to where the stance has it relative to the other (the desired pose's feet).
       // Its weight shift is the shorter one. The foot that moved last, as before, often stood under the com after a
       // cross-over: the com went back 0.2-0.3 m over the other foot first (1.5-2.5 s, a fifth given up) while the
-      // thighs stood crossed (docs/decisions/balance-steps.md, thirteenth round).
+      // thighs stood crossed (docs/decisions/balance-steps.md, thirteenth round). After a return or re-placement has
+      // landed (follow_up), the same look at the feet once more (BalanceStepTuning::follow_ups).
       st.settled = vcom.norm() < t.settle_speed && out < 0.0 ? st.settled + dt : 0.0;
       if (st.settled > t.settle_time) {
         int r = (com.head<2>() - sole[0]).norm() > (com.head<2>() - sole[1]).norm() ? 0 : 1;
@@ -391,6 +398,7 @@ void take_balance_steps(const eng::physics::Model& m, const eng::physics::Data& 
           }
         }
         st.recovering = false;
+        st.follow_up = false;
         st.steps_in_recovery = 0;
         st.settled = 0.0;
       }

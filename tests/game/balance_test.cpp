@@ -574,6 +574,37 @@ TEST(BalanceSteps, AFootTheRecoveryLeftOnAnEdgeIsRePlacedOntoAGoodFoothold) {
   }
 }
 
+TEST(BalanceSteps, AReturnThatLandsOnAnEdgeIsFollowedByARePlacement) {
+  // Yin's left push (394 N x 0.2 s) on seed 4 and the right one on seed 6, 14 s: each recovery ends in a return step
+  // that comes down with a sole over a crate's edge (on_poor_foothold). With the follow-up (BalanceStepTuning::
+  // follow_ups) the feet are looked at again once the body settles after it, and that foot is re-placed: both feet
+  // well placed at the end. Without it the foot stays on the edge.
+  const std::pair<const char*, const char*> pushes[] = {{"4", "90"}, {"6", "270"}};
+  for (const auto& [seed, dir] : pushes) {
+    const auto push = [&](int follow_ups, int* on_edge) {
+      const std::unique_ptr<boxing::World> w = push_world(seed, dir, "394");
+      if (!w) return boxing::BoxerMetrics{};
+      boxing::Boxer& b = w->boxers[0];
+      EXPECT_GE(b.settings.tuning.balance_step.follow_ups, 1);  // as built
+      b.settings.tuning.balance_step.follow_ups = follow_ups;
+      for (int i = 0; i < int(14.0 / boxing::kPhysicsDt); ++i) boxing::step_world(*w);
+      *on_edge = int(boxing::on_poor_foothold(w->data, w->arena, b, 0)) + int(boxing::on_poor_foothold(w->data, w->arena, b, 1));
+      return b.metrics;
+    };
+    int edge_with = -1, edge_without = -1;
+    const boxing::BoxerMetrics with = push(4, &edge_with), without = push(0, &edge_without);
+    std::printf("seed %s, push %s deg: feet on an edge at 14 s: %d (followed up), %d (not)\n", seed, dir, edge_with,
+                edge_without);
+    EXPECT_FALSE(with.fell) << "seed " << seed << ": fell at " << with.fell_at << " s (" << with.fell_reason << ")";
+    EXPECT_FALSE(without.fell) << "seed " << seed;
+    EXPECT_EQ(without.replacements, 0) << "seed " << seed;
+    EXPECT_GE(without.return_steps, 1) << "seed " << seed;
+    EXPECT_GE(with.replacements, 1) << "seed " << seed;
+    EXPECT_EQ(edge_with, 0) << "seed " << seed;
+    EXPECT_GE(edge_without, 1) << "seed " << seed;
+  }
+}
+
 TEST(BalanceSteps, AStandingBoxerTakesNoneAndItsLegsNeverTouch) {
   // Standing in guard for 10 s: the capture point never leaves the soles, no step is taken for nothing; the guard's
   // legs stay apart (BoxerMetrics::legs_overlap_*), its thighs never touch.

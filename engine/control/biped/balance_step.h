@@ -75,6 +75,13 @@ struct BalanceStepTuning {
   // ... onto one good by both the clips' margins (the test of a poor one: the core 1.5 cm inside the top's sides) and
   // the balance step's clearance (its landing's search then finds it good as it is)
   FootholdParams replace_foothold = {.side_margin = 0.015, .clearance = 0.05, .sole = {}};
+  // Once a return or re-placement lands and the body settles, the feet are looked at again, as at the recovery's end
+  // (a return if the stance is not one to fight from, else a re-placement), at most this many times a recovery: a
+  // return can land on an edge too (12 of 51 return landings on Yin's five pushes, seeds 1-20), and a re-placement
+  // can leave the other foot on one. Yin's five, seeds 1-96, 14 s: a foot on an edge at the end for 107 of 455
+  // standing with none, 87 with 1, 65 with 2, 57 with 4; 454 stand with any (docs/decisions/balance-steps.md,
+  // eighteenth round).
+  int follow_ups = 4;
   // m, it lifts once the capture point is this far inside the other sole. 4 cm was not reached by a fifth of the
   // shifts: the com came to rest 1-4 cm short of it and the shift was given up (Yin's pushes, seeds 1-40). 2 cm with
   // the com still moving (0.35 m/s, before return_lift_speed) ran off the stance toe's edge (match seed 19 with the
@@ -133,6 +140,10 @@ struct BalanceStep {
 struct BalanceStepState {
   BalanceStep step;
   int steps_in_recovery = 0;  // steps since the last time the body stood still
+  // A return or re-placement landed: the feet are looked at again once the body settles (BalanceStepTuning::follow_ups,
+  // counted since the recovery's first step).
+  bool follow_up = false;
+  int follow_ups = 0;
   double settled = 0.0;       // s the com has been slower than settle_speed with its capture point in the support
   bool recovering = false;    // a recovery started and has not returned to the stance yet
   int shifting = -1;          // phase 3: this foot will step back once the weight is over the other (-1: none)
