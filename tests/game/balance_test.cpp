@@ -46,6 +46,19 @@ std::unique_ptr<boxing::World> push_world(const char* seed, const char* dir, con
   return w.ok() ? std::move(*w) : nullptr;
 }
 
+// push_world's push, its boxer's balance-step tuning changed by `tune`, run for `seconds`: boxer 0's metrics, and in
+// *on_edge how many of its feet then stand on a poor foothold (on_poor_foothold).
+boxing::BoxerMetrics push_feet_on_edge(const char* seed, const char* dir, const char* force, double seconds,
+                                       const std::function<void(eng::control::BalanceStepTuning&)>& tune, int* on_edge) {
+  const std::unique_ptr<boxing::World> w = push_world(seed, dir, force);
+  if (!w) return boxing::BoxerMetrics{};
+  boxing::Boxer& b = w->boxers[0];
+  tune(b.settings.tuning.balance_step);
+  for (int i = 0; i < int(seconds / boxing::kPhysicsDt); ++i) boxing::step_world(*w);
+  *on_edge = int(boxing::on_poor_foothold(w->data, w->arena, b, 0)) + int(boxing::on_poor_foothold(w->data, w->arena, b, 1));
+  return b.metrics;
+}
+
 // Yin's push to the right, 394 N.
 std::unique_ptr<boxing::World> right_push_world(const char* seed) { return push_world(seed, "270", "394"); }
 
@@ -552,14 +565,10 @@ TEST(BalanceSteps, AFootTheRecoveryLeftOnAnEdgeIsRePlacedOntoAGoodFoothold) {
   const std::pair<const char*, const char*> pushes[] = {{"5", "0"}, {"7", "0"}, {"1", "90"}};
   for (const auto& [seed, dir] : pushes) {
     const auto push = [&](bool replace, int* on_edge) {
-      const std::unique_ptr<boxing::World> w = push_world(seed, dir, std::string(dir) == "0" ? "413" : "394");
-      if (!w) return boxing::BoxerMetrics{};
-      boxing::Boxer& b = w->boxers[0];
-      EXPECT_TRUE(b.settings.tuning.balance_step.replace_edge_foot);  // as built
-      b.settings.tuning.balance_step.replace_edge_foot = replace;
-      for (int i = 0; i < int(10.0 / boxing::kPhysicsDt); ++i) boxing::step_world(*w);
-      *on_edge = int(boxing::on_poor_foothold(w->data, w->arena, b, 0)) + int(boxing::on_poor_foothold(w->data, w->arena, b, 1));
-      return b.metrics;
+      return push_feet_on_edge(seed, dir, std::string(dir) == "0" ? "413" : "394", 10.0, [replace](auto& t) {
+        EXPECT_TRUE(t.replace_edge_foot);  // as built
+        t.replace_edge_foot = replace;
+      }, on_edge);
     };
     int edge_with = -1, edge_without = -1;
     const boxing::BoxerMetrics with = push(true, &edge_with), without = push(false, &edge_without);
@@ -582,14 +591,10 @@ TEST(BalanceSteps, AReturnThatLandsOnAnEdgeIsFollowedByARePlacement) {
   const std::pair<const char*, const char*> pushes[] = {{"4", "90"}, {"6", "270"}};
   for (const auto& [seed, dir] : pushes) {
     const auto push = [&](int follow_ups, int* on_edge) {
-      const std::unique_ptr<boxing::World> w = push_world(seed, dir, "394");
-      if (!w) return boxing::BoxerMetrics{};
-      boxing::Boxer& b = w->boxers[0];
-      EXPECT_GE(b.settings.tuning.balance_step.follow_ups, 1);  // as built
-      b.settings.tuning.balance_step.follow_ups = follow_ups;
-      for (int i = 0; i < int(14.0 / boxing::kPhysicsDt); ++i) boxing::step_world(*w);
-      *on_edge = int(boxing::on_poor_foothold(w->data, w->arena, b, 0)) + int(boxing::on_poor_foothold(w->data, w->arena, b, 1));
-      return b.metrics;
+      return push_feet_on_edge(seed, dir, "394", 14.0, [follow_ups](auto& t) {
+        EXPECT_GE(t.follow_ups, 1);  // as built
+        t.follow_ups = follow_ups;
+      }, on_edge);
     };
     int edge_with = -1, edge_without = -1;
     const boxing::BoxerMetrics with = push(4, &edge_with), without = push(0, &edge_without);
