@@ -66,10 +66,10 @@ struct MatchTuning {
   double after_count = 0.75;         // consciousness at least this once up from a knockdown
   double neutral_corner_within = 1.6;  // m, pelvis to pelvis: at a get-up's start a standing opponent this close goes to its mark
   // A boxer getting up: its thighs pass through each other, as they pass through the opponent (pass_through_opponent).
-  // Colliding, a leg the get-up left behind the other caught on its thigh as the guard's stance swung it forward,
-  // and rose along it until it stood straight out behind, the boxer on one foot held by the root assist to the end of
-  // the run: 5 of matches 1-100 (seeds 1, 5, 73, 80, 98; 49-169 s), and match 13's get-up took 65.7 s. Passing:
-  // none, the longest get-up 6.0 s (docs/decisions/match-fight.md).
+  // Colliding, a leg the get-up left behind the other, swung forward by the guard's stance, rose until it stood
+  // straight out behind (caught on the other thigh: passing, the same get-up ends), the boxer on one foot held by the
+  // root assist to the end of the run: 5 of matches 1-100 (seeds 1, 5, 73, 80, 98; 23-169 s), and match 13's get-up
+  // took 65.7 s. Passing: none, the longest get-up 6.0 s (docs/decisions/match-fight.md).
   bool getup_thighs_pass = true;
   // s in the stand-up without getting up: it is given up, the boxer sinks back (down, limp) and starts it again (the
   // stand-up is not a balance the body can always finish from where it got to; a retry starts it from the ground).

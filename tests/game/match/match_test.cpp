@@ -106,11 +106,12 @@ TEST(Match, BoxerUpFromAKnockdownStandsOnItsMarkAsAtTheStart) {
   EXPECT_LT(g.reset_feet_off, 0.12);  // m: each ankle near where it stood at the start (the same stance, same crates)
 }
 
-// Match 80's red, knocked down at 11.1 s, got up with its left leg behind the right; the guard's stance swung it forward
-// past the right leg. With the thighs colliding it caught on the other thigh, rose along it and stood straight out
-// behind, red on one foot, held up by the root assist to the end of the run (seeds 1, 5, 73, 80 and 98 of 1-100). A
-// boxer getting up lets its thighs pass through each other (MatchTuning::getup_thighs_pass), as it passes through its
-// opponent: red is up at 17.1 s. The run without the give-up (MatchTuning::stand_up_give_up), to see the pass alone.
+// Match 80's red, knocked down at 11.1 s, got up with its left leg behind the right; the guard's stance swung it
+// forward past the right leg. With the thighs colliding it rose until it stood straight out behind (caught on the
+// other thigh: passing, the same get-up ends), red on one foot, held up by the root assist to the end of the run
+// (seeds 1, 5, 73, 80 and 98 of 1-100). A boxer getting up lets its thighs pass through each other
+// (MatchTuning::getup_thighs_pass), as it passes through its opponent: red is up at 17.1 s. The runs are without the
+// give-up (MatchTuning::stand_up_give_up), to see the pass alone.
 TEST(Match, AGetUpsLegCannotCatchOnTheOtherThigh) {
   for (const bool pass : {false, true}) {
     auto w = run_match(80, 25.0, [pass](MatchTuning& t) {
