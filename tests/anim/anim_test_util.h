@@ -4,6 +4,7 @@
 
 #include "engine/anim/clip.h"
 #include "engine/anim/skeleton.h"
+#include "test_paths.h"
 
 namespace anim_test {
 

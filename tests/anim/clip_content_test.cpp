@@ -12,6 +12,7 @@
 
 #include "anim/anim_test_util.h"
 #include "engine/assets/gltf.h"
+#include "test_paths.h"
 
 using namespace eng::anim;
 using anim_test::boxer_skeleton;

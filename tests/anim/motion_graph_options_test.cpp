@@ -13,6 +13,7 @@
 #include "anim/anim_test_util.h"
 #include "engine/anim/motion_graph.h"
 #include "game/boxing_motion.h"
+#include "test_paths.h"
 
 using namespace eng::anim;
 

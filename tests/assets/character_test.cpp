@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include "test_paths.h"
 
 namespace {
 

@@ -15,6 +15,7 @@
 
 #include "engine/assets/character.h"
 #include "engine/assets/gltf.h"
+#include "test_paths.h"
 
 namespace {
 

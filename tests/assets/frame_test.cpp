@@ -12,6 +12,7 @@
 
 #include "engine/assets/character.h"
 #include "engine/assets/gltf.h"
+#include "test_paths.h"
 
 namespace {
 

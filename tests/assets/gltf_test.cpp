@@ -10,6 +10,7 @@
 #include <limits>
 #include <string>
 #include <vector>
+#include "test_paths.h"
 
 namespace {
 

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "support/vulkan_test_env.h"
+#include "test_paths.h"
 
 namespace {
 

@@ -17,6 +17,7 @@
 #include "game/app.h"
 #include "game/cli.h"
 #include "support/vulkan_test_env.h"
+#include "test_paths.h"
 
 namespace fs = std::filesystem;
 

@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 #include <glm/gtc/matrix_transform.hpp>
 #include "render/render_fixture.h"
+#include "test_paths.h"
 
 using namespace eng::render;
 

@@ -10,6 +10,7 @@
 #include "engine/platform/window.h"
 #include "render/render_fixture.h"
 #include "support/x11_window_pixels.h"
+#include "test_paths.h"
 
 using namespace eng::render;
 

@@ -17,6 +17,7 @@
 #include "game/scene_view.h"
 #include "game/world.h"
 #include "support/vulkan_test_env.h"
+#include "test_paths.h"
 
 namespace {
 nlohmann::json read_json(const std::string& path) {

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "game/interaction/input_events.h"
+#include "test_paths.h"
 
 using boxing::InputEvent;
 using boxing::InputKind;

@@ -10,6 +10,7 @@
 
 #include "game/cli.h"
 #include "game/world.h"
+#include "test_paths.h"
 
 using boxing::InputEvent;
 using boxing::InputKind;

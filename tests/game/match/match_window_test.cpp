@@ -10,6 +10,7 @@
 
 #include "engine/platform/window.h"
 #include "support/vulkan_test_env.h"
+#include "test_paths.h"
 
 TEST(MatchWindow, FightKeysThrowThePlayersPunches) {
   if (!eng::platform::display_available()) GTEST_SKIP() << "no display (run under xvfb-run to exercise this)";
