@@ -18,6 +18,7 @@
 #include "game/control_panel.h"
 #include "game/hud.h"
 #include "game/interaction/mouse_hands.h"
+#include "game/match/match.h"
 #include "game/scene_view.h"
 #include "game/world.h"
 
@@ -136,9 +137,9 @@ eng::Result<void> save_png(const eng::Image& img, const std::string& path) {
 
 eng::Result<void> write_recording(const Options& o, const World& w) {
   if (o.record.empty()) return {};
-  auto ok = write_input_file(o.record, w.interaction.recorded);
+  auto ok = write_input_file(o.record, w.interaction->recorded);
   if (ok) std::printf("boxing: %zu input events recorded to %s (play back: --scenario %s --seed %llu --input %s)\n",
-                      w.interaction.recorded.size(), o.record.c_str(), o.scenario.c_str(),
+                      w.interaction->recorded.size(), o.record.c_str(), o.scenario.c_str(),
                       static_cast<unsigned long long>(w.options.seed), o.record.c_str());
   return ok;
 }
@@ -179,7 +180,7 @@ eng::Result<HeadlessRun> run_headless(const Options& o) {
       eng::ui::ui_begin(r.ui(), in);
       draw_stats_panel({float(sim.ms.back()), r.device_name(),
                         {"t = " + std::to_string(w.data.time) + " s", "scenario " + o.scenario}});
-      if (w.match.active) draw_match_panel(match_hud(w));
+      if (w.match->active) draw_match_panel(match_hud(w));
       eng::ui::ui_end(r.ui());
     }
     if (auto ok = r.render(f); !ok) return eng::make_error("boxing: rendering failed: " + ok.error());
@@ -329,7 +330,7 @@ int run_windowed(const Options& o) {
         orbit.from(camera_preset(cameras[camera_index], w));
       }
       // The fight keys: the first one takes over the red boxer (or the --player one) from the AI.
-      if (w.match.active)
+      if (w.match->active)
         for (const auto& [key, action] : kFightKeys)
           if (win.key_pressed(key)) {
             InputEvent e;
@@ -388,15 +389,15 @@ int run_windowed(const Options& o) {
       ++frames;
     }
     if (o.seconds > 0 && w.data.time >= o.seconds) win.request_close();
-    if (w.match.active) {
-      const int kd = w.match.fighter[0].knockdowns + w.match.fighter[1].knockdowns;
+    if (w.match->active) {
+      const int kd = w.match->fighter[0].knockdowns + w.match->fighter[1].knockdowns;
       if (kd > replay.knockdowns && !replay.active) replay.pending = w.data.time + 1.0, replay.from = w.data.time - 1.5;
       replay.knockdowns = kd;
-      if (replay.pending >= 0.0 && w.data.time >= replay.pending && w.match.replay.count() > 0) {
+      if (replay.pending >= 0.0 && w.data.time >= replay.pending && w.match->replay.count() > 0) {
         replay.active = true;
         replay.pending = -1.0;
         replay.to = w.data.time;
-        replay.at = std::max(replay.from, w.match.replay.time(0));
+        replay.at = std::max(replay.from, w.match->replay.time(0));
         live_q = w.data.q;
       }
     }
@@ -412,7 +413,7 @@ int run_windowed(const Options& o) {
       draw_stats_panel(stats);
       draw_control_panel(w, view, panel);
     }
-    if (overlay && w.match.active) {
+    if (overlay && w.match->active) {
       MatchHud hud = match_hud(w);
       if (replay.active) hud.banner = "REPLAY";
       draw_match_panel(hud);
@@ -421,7 +422,7 @@ int run_windowed(const Options& o) {
     if (win.minimized()) continue;
     const auto t1 = clock_type::now();
     if (replay.active) {  // the recorded coordinates of the replay's moment, then the live ones back
-      const ReplayBuffer& rb = w.match.replay;
+      const ReplayBuffer& rb = w.match->replay;
       const int i = rb.at_or_before(replay.at);
       std::copy(rb.q(i), rb.q(i) + rb.nq(), w.data.q.data());
       eng::physics::forward_kinematics(w.model, w.data);

@@ -51,7 +51,7 @@ Arena make_arena(uint64_t seed, double min_step, double separation, bool flat) {
     int li, lj, ri, rj;
     foot(kStanceHalfLength, kStanceHalfWidth, li, lj);
     foot(-kStanceHalfLength, -kStanceHalfWidth, ri, rj);
-    // Enforce the step between the two feet (the "one foot at least 10 cm higher"), keeping the random
+    // Enforce the step between the two feet (the arena's rule: one foot at least min_step higher), keeping the random
     // sign of which foot is higher.
     double& hl = height[li][lj];
     double& hr = height[ri][rj];

@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <optional>
 
+#include "game/interaction/interaction.h"
+#include "game/match/match.h"
 #include "game/world.h"
 #include "imgui.h"
 
@@ -106,8 +108,8 @@ void draw_control_panel(World& w, SceneView& view, PanelState& p) {
       e.consciousness = *c;
       interaction_submit(w, e);
     }
-    if (w.match.active && b.index < 2) {
-      int player = w.match.fighter[b.index].player ? 1 : 0;
+    if (w.match->active && b.index < 2) {
+      int player = w.match->fighter[b.index].player ? 1 : 0;
       bool switched = ImGui::RadioButton("AI", &player, 0);
       ImGui::SameLine();
       switched |= ImGui::RadioButton("player", &player, 1);
@@ -143,7 +145,7 @@ void draw_control_panel(World& w, SceneView& view, PanelState& p) {
   ImGui::TextDisabled("left-drag grabs (Shift: strong, wheel: depth)");
   ImGui::TextDisabled("T ball  Y crate  Backspace clear  F5 restart");
   ImGui::TextDisabled("F1/F2 servo  F3/F4 QP-PD  F6/F7 root spring");
-  if (w.match.active) {
+  if (w.match->active) {
     ImGui::TextDisabled("fight: J jab  K cross  U/I hooks  N/M uppercuts");
     ImGui::TextDisabled("       B block  A/D slip  S duck  W/X step");
   }

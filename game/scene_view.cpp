@@ -5,6 +5,7 @@
 #include "engine/control/biped/capture_point.h"
 #include "engine/control/biped/support_polygon.h"
 #include "engine/physics/dynamics.h"
+#include "game/interaction/interaction.h"
 #include "game/stance_ik.h"
 
 namespace boxing {
@@ -44,7 +45,7 @@ void draw_spring(const World& w, int slot, eng::render::FrameDesc& f) {
 // The drags' springs (the mouse's and scripted ones): the grabbed point, the target and the line between, green at
 // no force to red at the cap.
 void draw_interaction(const World& w, eng::render::FrameDesc& f) {
-  for (int slot = 0; slot < int(w.interaction.drags.size()); ++slot) draw_spring(w, slot, f);
+  for (int slot = 0; slot < int(w.interaction->drags.size()); ++slot) draw_spring(w, slot, f);
 }
 
 void draw_debug(const World& w, const DebugDrawFlags& dbg, eng::render::FrameDesc& f) {
@@ -97,7 +98,7 @@ void draw_debug(const World& w, const DebugDrawFlags& dbg, eng::render::FrameDes
     }
   }
   if (dbg.hits)
-    for (const Interaction::Flash& fl : w.interaction.flashes) {
+    for (const Interaction::Flash& fl : w.interaction->flashes) {
       const double age = d.time - fl.t;
       if (age < 0.0 || age > 0.35) continue;
       const float k = float(1.0 - age / 0.35);
@@ -146,7 +147,7 @@ SceneView make_scene_view(const World& w, eng::render::Renderer& r) {
   for (const LooseBody& l : w.loose)
     v.loose_mesh.push_back(r.upload_mesh(eng::render::make_box_mesh(glm::vec3(
         float(l.shape.half_extents.x()), float(l.shape.half_extents.y()), float(l.shape.half_extents.z())))));
-  for (const ThrownObject& o : w.interaction.objects) {
+  for (const ThrownObject& o : w.interaction->objects) {
     if (o.group == 0) continue;  // not from the pool: drawn as a loose body
     v.object_mesh.push_back(o.kind == ObjectKind::Ball
                                 ? r.upload_mesh(eng::render::make_sphere_mesh(float(kBall.radius), 24))
@@ -211,8 +212,8 @@ void fill_frame(const World& w, const SceneView& v, eng::render::FrameDesc& f) {
     f.opaque.push_back(in);
   }
   // The interaction's thrown objects (pool order: balls in bright colours, crates in a paler wood).
-  for (size_t i = 0, mesh = 0; i < w.interaction.objects.size(); ++i) {
-    const ThrownObject& o = w.interaction.objects[i];
+  for (size_t i = 0, mesh = 0; i < w.interaction->objects.size(); ++i) {
+    const ThrownObject& o = w.interaction->objects[i];
     if (o.group == 0) continue;
     const size_t m = mesh++;
     if (!o.live || m >= v.object_mesh.size()) continue;

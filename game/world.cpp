@@ -12,6 +12,9 @@
 #include "engine/physics/step.h"
 #include "game/boxer_stepping.h"
 #include "game/boxing_motion.h"
+#include "game/interaction/chaos.h"
+#include "game/interaction/interaction.h"
+#include "game/match/match.h"
 #include "game/rng.h"
 #include "game/scenarios/scenario_hooks.h"
 #include "game/world_build.h"
@@ -31,14 +34,11 @@ std::string content_dir(const Options& o) {
 
 namespace {
 
-constexpr uint32_t kStaticGroup = 1u;
-// The servo and root-spring setup values: ServoSetupTuning / RootTuning (boxer_tuning.h, docs/decisions/).
-
 void add_static_arena(World& w) {
   Geom floor;
   floor.shape.type = ShapeType::Plane;
   floor.body = 0;
-  floor.friction = 0.9;
+  floor.friction = w.tuning.floor_friction;
   floor.group = kStaticGroup;
   w.model.add_geom(floor);
   for (const Crate& c : w.arena.crates) {
@@ -47,7 +47,7 @@ void add_static_arena(World& w) {
     g.shape.half_extents = c.half_extents;
     g.body = 0;
     g.local.p = c.center;
-    g.friction = 0.9;
+    g.friction = w.tuning.crate_friction;
     g.group = kStaticGroup;
     w.model.add_geom(g);
   }
@@ -107,7 +107,7 @@ void setup_implicit_servo(World& w, Boxer& b) {
     if (j.kind == eng::control::JointKind::None) continue;
     j.axis = body.axis;
     // Parent spaces: every joint referenced to its desired parent (planted mode = joint-space PD), gains from
-    // the subtree rule as before.
+    // the same subtree rule.
     const bool parent_space = b.settings.space == eng::control::ServoSpace::Parent ||
                               b.settings.space == eng::control::ServoSpace::ParentMeathook;
     j.support = parent_space || support[i];
@@ -147,7 +147,7 @@ void configure_boxer_control(World& w, Boxer& b) {
     q->params.max_root_assist = b.settings.root_params.max_torque;
     q->params.w_torque = b.settings.root_params.enabled ? b.settings.tuning.root.qp_torque_price : 0.0;
     // The per-tick contact lists at their capacity once (twice what the plan takes, kQpMaxContacts): grown past a
-    // warm-up's high-water mark in a recovery, they allocated in the step (push seed 4: 9 allocations in 6 s).
+    // warm-up's high-water mark in a recovery, they would allocate in the step.
     constexpr int contacts = 2 * eng::control::kQpMaxContacts;
     q->in.contacts.reserve(contacts);
     q->out.contact_force.reserve(contacts);
@@ -166,10 +166,6 @@ void configure_boxer_control(World& w, Boxer& b) {
   setup_implicit_servo(w, b);
 }
 
-namespace {
-constexpr double kStandingComHeight = 0.95;  // m, the guard's com over the soles (Kwon's pendulum length)
-}  // namespace
-
 void add_boxer(World& w, int index, const Eigen::Vector3f& color, bool limp, const Stance& stance) {
   Boxer b;
   b.index = index;
@@ -184,16 +180,15 @@ void add_boxer(World& w, int index, const Eigen::Vector3f& color, bool limp, con
   }
   const uint32_t group = 2u << index;
   b.bodies = add_character(w.model, w.boxer_desc, "b" + std::to_string(index) + "_", group, 0xffffffffu, false);
-  // The thighs hold each other off: passing through each other, a sideways push's cross-over stood with its thighs in
-  // an X up to 13 cm deep. The shanks and feet still pass: colliding too, a cross-over's next step, from behind the
-  // stance leg to in front of it, caught on it and the boxer fell (docs/decisions/balance-steps.md, tenth and
-  // fourteenth rounds).
+  // The thighs hold each other off: passing through each other, a sideways push's cross-over stands with its thighs
+  // in an X. The shanks and feet still pass: colliding too, a cross-over's next step, from behind the stance leg to
+  // in front of it, catches on it and the boxer falls (docs/decisions/balance-steps.md).
   set_self_colliding(w.model, b.bodies, {b.bones.leg[0].thigh, b.bones.leg[1].thigh});
   b.settings.space = servo_space_from_name(w.options.servo);
   b.settings.balance_qp = w.options.balance == "qp";
   // Balance steps: on in the push lab and where the boxers walk the graph (the match, the walk), there past what the
   // root assist holds (BalanceStepTuning::assist_reach_share: none in the twelve 10-minute walks, a few a match); the
-  // stand's drags (no root help) keep them off as they were measured (docs/decisions/balance-steps.md, sixth round).
+  // stand's drags (no root help) keep them off as they were measured (docs/decisions/balance-steps.md).
   const bool steps_by_default =
       w.options.scenario_id == Scenario::Push || scenario_hooks(w.options.scenario_id).walks_graph;
   b.settings.stepping = w.options.stepping == "on" || (w.options.stepping == "auto" && steps_by_default);
@@ -214,7 +209,7 @@ void add_boxer(World& w, int index, const Eigen::Vector3f& color, bool limp, con
   if (b.settings.placement == eng::control::StepPlacement::InvertedPendulumLqr) {
     // Kwon & Hodgins' pendulum: the com's standing height over the soles, the feet and shanks as the cart.
     const double m = b.control_body.total_mass, cart = b.settings.tuning.balance_step.cart_mass_fraction * m;
-    b.ctl.step_lqr = eng::control::solve_cart_pole_lqr(kStandingComHeight, m - cart, cart);
+    b.ctl.step_lqr = eng::control::solve_cart_pole_lqr(w.tuning.standing_com_height, m - cart, cart);
   }
   // The root spring: asked for, or (auto) for the paper's boxers, the graph walk and the match.
   const bool boxers = scenario_hooks(w.options.scenario_id).walks_graph;
@@ -244,8 +239,14 @@ void place_boxer(World& w, Boxer& b) {
   set_character_pose(w.model, w.data, b.bodies, w.boxer_desc, b.desired.pose.root_position, b.desired.pose.rotation);
 }
 
+World::World() = default;
+World::~World() = default;
+
 eng::Result<std::unique_ptr<World>> make_world(const Options& o) {
   auto w = std::make_unique<World>();
+  w->match = std::make_unique<Match>();
+  w->interaction = std::make_unique<Interaction>();
+  w->chaos = std::make_unique<Chaos>();
   w->options = o;
   const std::string dir = content_dir(o);
   auto scene = eng::assets::load_gltf(dir + "/boxer/boxer.gltf");
@@ -262,7 +263,7 @@ eng::Result<std::unique_ptr<World>> make_world(const Options& o) {
     return eng::make_error("boxing: --clip '" + o.drill_clip + "' is not a clip in " + dir +
                            "/clips/boxing_clips.gltf (see `build/boxing graph --report g.json` for the names)");
 
-  w->arena = make_arena(o.seed, 0.10, o.scenario_id == Scenario::Match ? kFightSeparation : kBoxerSeparation, o.flat);
+  w->arena = make_arena(o.seed, w->tuning.arena_min_step, o.scenario_id == Scenario::Match ? kFightSeparation : kBoxerSeparation, o.flat);
   w->model.dt = kPhysicsDt;
   add_static_arena(*w);
 
@@ -284,7 +285,7 @@ eng::Result<std::unique_ptr<World>> make_world(const Options& o) {
 
   scenario.place(*w, rng);
   interaction_setup(*w, std::move(script));
-  w->interaction.recording = !o.record.empty();
+  w->interaction->recording = !o.record.empty();
   chaos_setup(*w);
   eng::physics::forward_kinematics(w->model, w->data);
   for (Boxer& b : w->boxers) {
@@ -300,24 +301,25 @@ eng::Result<std::unique_ptr<World>> make_world(const Options& o) {
 }
 
 namespace {
-// Boxers the hands hold, push or hit with a thrown object now are handled for another kHandledHold seconds (BoxerControlState::handled_until).
-constexpr double kHandledHold = 2.0;
+// Boxers the hands hold, push or hit with a thrown object now are handled for another WorldTuning::handled_hold
+// seconds (BoxerControlState::handled_until).
 void mark_handled_boxers(World& w) {
-  const Interaction& in = w.interaction;
+  const Interaction& in = *w.interaction;
   auto mark = [&w](int body) {
-    if (body < 0 || body >= int(w.interaction.owners.size())) return;
-    const int k = w.interaction.owners[body].boxer;
-    if (k >= 0 && k < int(w.boxers.size())) w.boxers[k].ctl.handled_until = w.data.time + kHandledHold;
+    if (body < 0 || body >= int(w.interaction->owners.size())) return;
+    const int k = w.interaction->owners[body].boxer;
+    if (k >= 0 && k < int(w.boxers.size())) w.boxers[k].ctl.handled_until = w.data.time + w.tuning.handled_hold;
   };
   for (const HeldDrag& h : in.drags)
     if (h.active) mark(h.body);
   for (const ActivePush& p : in.pushes) mark(p.body);
   // A thrown object's hit (the last step's, recorded after it) hands the boxer over to the plain priorities too.
   for (auto h = in.object_hits.rbegin(); h != in.object_hits.rend() && h->t >= w.data.time - kPhysicsDt; ++h)
-    if (h->boxer >= 0 && h->boxer < int(w.boxers.size())) w.boxers[h->boxer].ctl.handled_until = w.data.time + kHandledHold;
+    if (h->boxer >= 0 && h->boxer < int(w.boxers.size()))
+      w.boxers[h->boxer].ctl.handled_until = w.data.time + w.tuning.handled_hold;
   // The player's hands act through a handled boxer on whatever it touches: a boxer struck by the other one as it is
-  // dragged or thrown about is handled too (the chaos soak, match seed 9 at 224 s: struck by a dragged boxer falling on
-  // it, held to Kudoh's trunk priority, a standing boxer whipped an arm to 40 m/s).
+  // dragged or thrown about is handled too (held to Kudoh's trunk priority under such a blow, a standing boxer whips
+  // an arm far past any punch's speed).
   for (const auto& c : w.data.prev_contacts) {
     if (c.body_a == 0 || c.body_b == 0 || c.body_a >= int(in.owners.size()) || c.body_b >= int(in.owners.size())) continue;
     const int ka = in.owners[c.body_a].boxer, kb = in.owners[c.body_b].boxer;

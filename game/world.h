@@ -17,14 +17,18 @@
 #include "game/arena.h"
 #include "game/boxer.h"
 #include "game/cli.h"
-#include "game/interaction/chaos.h"
-#include "game/interaction/interaction.h"
-#include "game/match/match.h"
+#include "game/health.h"
 
 namespace boxing {
 
 inline constexpr double kPhysicsDt = 1.0 / 240.0;
 inline constexpr int kStepsPerFrame = 4;  // 60 Hz display frames
+
+// The world's parts that live in game/match/ and game/interaction/ (those headers include this one's neighbours, not
+// the other way round): owned here through pointers, created by make_world.
+struct Match;
+struct Interaction;
+struct Chaos;
 
 struct LooseBody {
   int body = 0;
@@ -32,8 +36,22 @@ struct LooseBody {
   Eigen::Vector3f color;
 };
 
+// The world's own setup numbers (the boxers' are in boxer_tuning.h, the fight's in MatchTuning).
+struct WorldTuning {
+  double floor_friction = 0.9;  // the floor's Coulomb mu (a pair takes sqrt(mu_a mu_b)); lower, the feet slide more
+  double crate_friction = 0.9;  // the crates' tops and sides, the same as the floor's
+  double arena_min_step = 0.10;  // m, make_arena's least height step between neighbouring crates (arena.h)
+  double standing_com_height = 0.95;  // m, the guard's com over the soles (Kwon's pendulum length, step_lqr)
+  // s a boxer stays handled (BoxerControlState::handled_until) after the hands last hold, push or hit it with a
+  // thrown object: longer keeps it on the plain balance priorities longer after a drag.
+  double handled_hold = 2.0;
+};
+
 struct World {
+  World();
+  ~World();  // (in world.cpp: the parts' types are complete there)
   Options options;
+  WorldTuning tuning;
   Arena arena;
   eng::assets::GltfScene boxer_scene;
   eng::assets::CharacterDesc boxer_desc;
@@ -61,10 +79,10 @@ struct World {
   // pressure in the stance's heading frame about its mark (the pelvis between the feet; x forward, y left), both upper arms'
   // swing (rad, forward from hanging, in the sagittal plane).
   std::vector<std::array<double, 7>> push_trace;
-  Match match;  // the match scenario's fight (game/match/match.h); inactive elsewhere
-  Interaction interaction;  // the player's hands: drags, thrown objects, scripted and recorded input
-  Chaos chaos;              // --chaos: seeded random input events
-  Health health;            // measured every step (the report's health block)
+  std::unique_ptr<Match> match;  // the match scenario's fight (game/match/match.h); inactive elsewhere
+  std::unique_ptr<Interaction> interaction;  // the player's hands: drags, thrown objects, scripted and recorded input
+  std::unique_ptr<Chaos> chaos;              // --chaos: seeded random input events (game/interaction/chaos.h)
+  Health health;                             // measured every step (the report's health block)
 };
 
 // Loads content (boxer, clips) from options.content_dir and builds the scenario (and --input's script).

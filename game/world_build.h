@@ -1,6 +1,7 @@
 #pragma once
 // Building a world's boxers, for the scenarios (game/scenarios/): internal to the game.
 #include <Eigen/Core>
+#include <cstdint>
 
 #include "game/arena.h"
 
@@ -8,6 +9,8 @@ namespace boxing {
 
 struct World;
 struct Boxer;
+
+inline constexpr uint32_t kStaticGroup = 1u;  // the floor's and crates' collision group (a boxer's: 2u << index)
 
 // Adds a boxer's bodies to the model (before Model::finalize) with its servo, balance controller and pose source.
 void add_boxer(World& w, int index, const Eigen::Vector3f& color, bool limp, const Stance& stance);

@@ -5,17 +5,18 @@
 #include <string>
 
 #include "engine/physics/dynamics.h"
+#include "game/interaction/interaction.h"
 #include "game/world.h"
 
 namespace boxing {
 
 void chaos_setup(World& w) {
-  w.chaos.rate = w.options.chaos;
-  w.chaos.rng = Rng(w.options.seed * 0xC4A05ull + 0x5EEDull);
+  w.chaos->rate = w.options.chaos;
+  w.chaos->rng = Rng(w.options.seed * 0xC4A05ull + 0x5EEDull);
 }
 
 void chaos_begin_step(World& w) {
-  Chaos& c = w.chaos;
+  Chaos& c = *w.chaos;
   if (c.rate <= 0.0 || w.boxers.empty()) return;
   if (c.rng.uniform() >= c.rate * w.model.dt) return;  // a Poisson process sampled per step
   Rng& r = c.rng;
@@ -75,7 +76,7 @@ void health_after_step(World& w) {
         h.max_body_speed = s, h.worst_speed_at = d.time, h.worst_speed_boxer = b.index, h.worst_speed_bone = int(i);
       h.bodies_below_floor += inside(d.com_world[body]);
     }
-  for (const ThrownObject& o : w.interaction.objects) {
+  for (const ThrownObject& o : w.interaction->objects) {
     if (!o.live) continue;
     if (o.group == 0 || d.time - o.thrown_at > 0.1) h.max_object_speed = std::max(h.max_object_speed, speed_of(o.body));
     h.bodies_below_floor += inside(d.com_world[o.body]);
@@ -94,8 +95,8 @@ nlohmann::json health_report(const World& w) {
           {"max_object_speed_mps", h.max_object_speed},
           {"bodies_below_floor", h.bodies_below_floor},
           {"max_penetration_m", h.max_penetration},
-          {"chaos_rate", w.chaos.rate},
-          {"chaos_events", w.chaos.events}};
+          {"chaos_rate", w.chaos->rate},
+          {"chaos_events", w.chaos->events}};
 }
 
 }  // namespace boxing

@@ -6,6 +6,7 @@
 // chaos for a long time over seeds and checks the health.
 #include <nlohmann/json.hpp>
 
+#include "game/health.h"
 #include "game/rng.h"
 
 namespace boxing {
@@ -18,16 +19,6 @@ struct Chaos {
   int events = 0;
 };
 
-struct Health {
-  long non_finite_steps = 0;            // steps after which a coordinate or velocity was not finite
-  double max_body_speed = 0.0;          // m/s, over the boxers' bodies
-  double max_object_speed = 0.0;        // m/s, over thrown objects from 0.1 s after their throw
-  long bodies_below_floor = 0;          // body-steps with a body's centre under the floor or inside a crate (> 2 cm)
-  double max_penetration = 0.0;         // m, the deepest contact
-  double worst_speed_at = -1.0;         // s, when max_body_speed was seen
-  int worst_speed_boxer = -1, worst_speed_bone = -1;  // ... and whose body (for tracing a soak's outlier)
-  double crates_top = -1.0;             // m, the highest crate top (a body centre above it is in no crate)
-};
 
 // Seeds the stream (options.seed) and the rate (options.chaos).
 void chaos_setup(World& w);

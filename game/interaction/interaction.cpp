@@ -6,6 +6,7 @@
 
 #include "engine/physics/raycast.h"
 #include "engine/physics/step.h"
+#include "game/match/match.h"
 #include "game/world.h"
 #include "game/world_build.h"
 
@@ -30,7 +31,7 @@ void set_free_state(World& w, int body, const Vec3& p, const Eigen::Quaterniond&
 }
 
 void park(World& w, int k) {
-  ThrownObject& o = w.interaction.objects[k];
+  ThrownObject& o = w.interaction->objects[k];
   o.live = false;
   w.model.geoms[o.geom].group = 0;
   w.model.geoms[o.geom].mask = 0;
@@ -48,14 +49,14 @@ Vec3 world_point(const World& w, int body, const Vec3& local) { return w.data.x[
 // The body an event means (a boxer's bone or an object), or -1.
 int event_body(const World& w, const InputEvent& e) {
   if (e.object >= 0) {
-    if (e.object >= int(w.interaction.objects.size()) || !w.interaction.objects[e.object].live) return -1;
-    return w.interaction.objects[e.object].body;
+    if (e.object >= int(w.interaction->objects.size()) || !w.interaction->objects[e.object].live) return -1;
+    return w.interaction->objects[e.object].body;
   }
   return bone_body(w, e.boxer, e.bone);
 }
 
 void start_drag(World& w, int slot, const InputEvent& e, int body) {
-  Interaction& in = w.interaction;
+  Interaction& in = *w.interaction;
   HeldDrag& h = in.drags[slot];
   h.active = true;
   h.body = body;
@@ -84,16 +85,16 @@ void start_drag(World& w, int slot, const InputEvent& e, int body) {
 }
 
 void end_drag(World& w, int slot) {
-  HeldDrag& h = w.interaction.drags[slot];
+  HeldDrag& h = w.interaction->drags[slot];
   if (!h.active) return;
   h.active = false;
   w.data.point_springs[slot].active = false;
   w.data.point_springs[slot].impulse.setZero();
-  if (h.log >= 0) w.interaction.drag_log[h.log].released_at = w.data.time;
+  if (h.log >= 0) w.interaction->drag_log[h.log].released_at = w.data.time;
 }
 
 void throw_object(World& w, const InputEvent& e) {
-  Interaction& in = w.interaction;
+  Interaction& in = *w.interaction;
   // The next parked object of the kind, else the one of that kind thrown longest ago.
   int pick = -1;
   for (int k = 0; k < int(in.objects.size()); ++k) {
@@ -166,12 +167,12 @@ void apply_settings(World& w, const InputEvent& e) {
   if (e.root_spring) b.settings.root_params.enabled = *e.root_spring == "on", rebuild = true;
   if (e.root_limit) b.settings.root_params.max_torque = *e.root_limit, rebuild = true;
   if (e.consciousness) b.ctl.root_spring.set_consciousness(*e.consciousness);
-  if (e.control && w.match.active && e.boxer < 2) w.match.fighter[e.boxer].player = *e.control == "player";
+  if (e.control && w.match->active && e.boxer < 2) w.match->fighter[e.boxer].player = *e.control == "player";
   if (rebuild) configure_boxer_control(w, b);
 }
 
 void apply_event(World& w, const InputEvent& e) {
-  Interaction& in = w.interaction;
+  Interaction& in = *w.interaction;
   switch (e.kind) {
     case InputKind::Drag: {
       const int body = event_body(w, e);
@@ -225,7 +226,7 @@ void apply_event(World& w, const InputEvent& e) {
 }  // namespace
 
 void interaction_add_objects(World& w) {
-  Interaction& in = w.interaction;
+  Interaction& in = *w.interaction;
   auto add = [&](const ObjectSpec& spec, int n) {
     for (int k = 0; k < n; ++k) {
       eng::physics::Body body;
@@ -264,7 +265,7 @@ void interaction_add_objects(World& w) {
 }
 
 void interaction_setup(World& w, std::vector<InputEvent> script) {
-  Interaction& in = w.interaction;
+  Interaction& in = *w.interaction;
   in.owners = body_owners(int(w.model.bodies.size()), w.boxers, w.boxer_desc.skeleton);
   for (int k = 0; k < int(in.objects.size()); ++k) park(w, k);
   // The scenario's own loose bodies (the ragdolls' crates) can be grabbed too: objects outside the pool.
@@ -282,10 +283,10 @@ void interaction_setup(World& w, std::vector<InputEvent> script) {
   in.next_script = 0;
 }
 
-void interaction_submit(World& w, InputEvent e) { w.interaction.queue.push_back(std::move(e)); }
+void interaction_submit(World& w, InputEvent e) { w.interaction->queue.push_back(std::move(e)); }
 
 void interaction_begin_step(World& w) {
-  Interaction& in = w.interaction;
+  Interaction& in = *w.interaction;
   const double now = w.data.time;
   for (int s = 1; s < int(in.drags.size()); ++s)
     if (in.drags[s].active && in.drags[s].release_at >= 0.0 && now >= in.drags[s].release_at - kDueSlack) end_drag(w, s);
@@ -303,7 +304,7 @@ void interaction_begin_step(World& w) {
 }
 
 void interaction_apply_forces(World& w) {
-  Interaction& in = w.interaction;
+  Interaction& in = *w.interaction;
   const double now = w.data.time;
   for (int s = 0; s < int(in.drags.size()); ++s) {
     if (!in.drags[s].active) continue;
@@ -323,7 +324,7 @@ void interaction_apply_forces(World& w) {
 }
 
 void interaction_after_step(World& w) {
-  Interaction& in = w.interaction;
+  Interaction& in = *w.interaction;
   for (int s = 0; s < int(in.drags.size()); ++s) {
     const HeldDrag& h = in.drags[s];
     if (!h.active || h.log < 0) continue;
@@ -361,10 +362,10 @@ Pick interaction_pick(const World& w, const Eigen::Vector3d& origin, const Eigen
   p.point = hit.point;
   p.local = w.data.x[hit.body].inverse().apply(hit.point);
   p.distance = hit.distance;
-  const BodyOwner& owner = w.interaction.owners[hit.body];
+  const BodyOwner& owner = w.interaction->owners[hit.body];
   p.boxer = owner.boxer, p.bone = owner.bone;
-  for (int k = 0; k < int(w.interaction.objects.size()); ++k)
-    if (w.interaction.objects[k].body == hit.body) p.object = k;
+  for (int k = 0; k < int(w.interaction->objects.size()); ++k)
+    if (w.interaction->objects[k].body == hit.body) p.object = k;
   if (p.boxer < 0 && p.object < 0) p.body = -1;
   return p;
 }
@@ -382,7 +383,7 @@ InputEvent grab_event(const World& w, const Pick& p, bool strong) {
 
 bool drag_state(const World& w, int slot, Eigen::Vector3d& point, Eigen::Vector3d& target, double& force,
                 double& max_force) {
-  const HeldDrag& h = w.interaction.drags[slot];
+  const HeldDrag& h = w.interaction->drags[slot];
   if (!h.active) return false;
   const eng::physics::PointSpring& s = w.data.point_springs[slot];
   point = world_point(w, h.body, h.local);
@@ -393,7 +394,7 @@ bool drag_state(const World& w, int slot, Eigen::Vector3d& point, Eigen::Vector3
 }
 
 nlohmann::json interaction_report(const World& w) {
-  const Interaction& in = w.interaction;
+  const Interaction& in = *w.interaction;
   nlohmann::json drags = nlohmann::json::array(), hits = nlohmann::json::array();
   for (const Interaction::DragLog& d : in.drag_log) {
     nlohmann::json j = {{"t", d.t},

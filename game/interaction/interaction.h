@@ -31,7 +31,7 @@ struct DragStrength {
 inline constexpr DragStrength kDragNormal{2.5, 0.9, 450.0};
 inline constexpr DragStrength kDragStrong{4.0, 0.9, 2500.0};  // over three body weights: lifts and throws a boxer
 // m/s: the spring's target follows the hand (the cursor, a script's offset) at most this fast, as a real hand would;
-// a target that jumped 1-2 m at once under the strong spring whipped hands and feet past 30 m/s.
+// a target that jumps 1-2 m at once under the strong spring whips hands and feet past 30 m/s.
 inline constexpr double kDragTargetSpeed = 6.0;
 
 struct ObjectSpec {

@@ -7,17 +7,17 @@
 
 namespace boxing {
 
-FighterStyle draw_fighter_style(Rng& rng) {
+FighterStyle draw_fighter_style(Rng& rng, const FighterAiTuning& t) {
   FighterStyle s;
-  s.attack_rate = rng.uniform(1.0, 1.6);
-  s.combo = rng.uniform(0.15, 0.4);
-  s.defence = rng.uniform(0.25, 0.55);
-  s.reaction_s = rng.uniform(0.18, 0.26);
-  s.body_share = rng.uniform(0.15, 0.35);
-  // Every punch in the repertoire, the jab most (CompuBox: about half of all punches thrown are jabs), two
-  // favourites weighted up.
-  s.punch_weight = {3.0, 1.5, 1.0, 1.0, 0.7, 0.7, 1.0};
-  for (int k = 0; k < 2; ++k) s.punch_weight[rng.below(static_cast<int>(s.punch_weight.size()))] += 1.0;
+  s.attack_rate = rng.uniform(t.attack_rate_min, t.attack_rate_max);
+  s.combo = rng.uniform(t.combo_min, t.combo_max);
+  s.defence = rng.uniform(t.defence_min, t.defence_max);
+  s.reaction_s = rng.uniform(t.reaction_min, t.reaction_max);
+  s.body_share = rng.uniform(t.body_share_min, t.body_share_max);
+  // Every punch in the repertoire, the jab most, and the favourites weighted up.
+  s.punch_weight = t.punch_weight;
+  for (int k = 0; k < t.favourites; ++k)
+    s.punch_weight[rng.below(static_cast<int>(s.punch_weight.size()))] += t.favourite_weight;
   return s;
 }
 
@@ -29,9 +29,8 @@ int punch_index(const std::string& clip) {
 
 namespace {
 
-// A favourite, weighted by how often it has landed on this opponent (FighterStyle::prior_throws). Why: the lead hook
-// landed 12 of 775 throws in 40 matches (634 met a glove or an arm) and boxers that favoured it landed 8-11 in a
-// match; a real boxer throws what works (docs/decisions/match-fight.md).
+// A favourite, weighted by how often it has landed on this opponent (FighterStyle::prior_throws): a real boxer throws
+// what works, and a favourite the guard stops would otherwise be thrown on and on (docs/decisions/match-fight.md).
 double punch_weight(const FighterAi& ai, size_t i) {
   const double p = ai.style.prior_throws;
   return p > 0.0 ? ai.style.punch_weight[i] * (ai.landed_of[i] + 1.0) / (ai.thrown_of[i] + p) : ai.style.punch_weight[i];
@@ -39,11 +38,12 @@ double punch_weight(const FighterAi& ai, size_t i) {
 
 // The defence for the punch coming: hooks ducked or blocked, uppercuts blocked, straights slipped or blocked.
 const char* pick_defence(FighterAi& ai, const char* punch) {
+  const FighterAiTuning& t = ai.tuning;
   const double u = ai.rng.uniform();
-  if (std::strstr(punch, "hook")) return u < 0.5 ? "duck" : "block_high";
+  if (std::strstr(punch, "hook")) return u < t.hook_duck_share ? "duck" : "block_high";
   if (std::strstr(punch, "uppercut")) return "block_high";
-  if (u < 0.35) return "slip_left";
-  if (u < 0.7) return "slip_right";
+  if (u < t.slip_left_below) return "slip_left";
+  if (u < t.slip_right_below) return "slip_right";
   return "block_high";
 }
 
@@ -86,18 +86,18 @@ const char* fighter_ai_tick(FighterAi& ai, eng::anim::GraphWalker& walker, const
       return p;
     }
   }
-  // Footwork: keep fighting distance with the graph's steps (not too often: a step takes ~0.3 s and settles).
+  // Footwork: keep fighting distance with the graph's steps (not too often: FighterAiTuning::step_every).
   // Pressing a rocked opponent: each step in as soon as the last has ended (free: back in guard).
   if (v.free && !v.feet_busy && (v.too_far || v.too_close) && (v.time >= ai.next_step || (v.press && v.too_far))) {
-    ai.next_step = v.time + 2.0;
+    ai.next_step = v.time + ai.tuning.step_every;
     const char* step = v.too_far ? "step_forward" : "step_back";
     if (walker.request_clip(step)) ai.last_request = step;
     return nullptr;
   }
   if (!v.free || !v.in_range || v.time < ai.next_attack) return nullptr;
-  // Poisson attempts: the next one an exponential wait away (at least 0.35 s: a punch's own length).
-  const double rate = std::max(1e-3, ai.style.attack_rate * v.slow);
-  ai.next_attack = v.time + std::max(0.35, -std::log(1.0 - ai.rng.uniform()) / rate);
+  // Poisson attempts: the next one an exponential wait away (at least min_attack_wait: a punch's own length).
+  const double rate = std::max(ai.tuning.min_attack_rate, ai.style.attack_rate * v.slow);
+  ai.next_attack = v.time + std::max(ai.tuning.min_attack_wait, -std::log(1.0 - ai.rng.uniform()) / rate);
   const char* p = pick_punch(ai);
   if (!walker.request_clip(p)) return nullptr;
   ai.last_request = p;

@@ -33,12 +33,36 @@ struct FighterStyle {
   double prior_throws = 3.0;
 };
 
-// A style drawn from the seed: aggression 1.0-1.6 attempts/s, defence 0.25-0.55, reaction 0.18-0.26 s, and two
-// favourite punches weighted up.
-FighterStyle draw_fighter_style(Rng& rng);
+// The AI's choices: the ranges its seeded styles are drawn from and its fixed habits.
+struct FighterAiTuning {
+  double attack_rate_min = 1.0, attack_rate_max = 1.6;  // attempts/s, a style's aggression drawn in this range
+  double combo_min = 0.15, combo_max = 0.4;              // a style's chance of a combination, drawn in this range
+  double defence_min = 0.25, defence_max = 0.55;         // a style's chance of defending a punch seen starting
+  // s, a style's reaction time (visual simple reaction times of trained athletes are 0.15-0.25 s)
+  double reaction_min = 0.18, reaction_max = 0.26;
+  double body_share_min = 0.15, body_share_max = 0.35;  // a style's share of punches to the torso
+  // Every punch's base weight (kPunchClips order), the jab most: CompuBox counts about half of all punches thrown as
+  // jabs. Flatter gives a more varied, less realistic repertoire.
+  std::array<double, kPunchClips.size()> punch_weight = {3.0, 1.5, 1.0, 1.0, 0.7, 0.7, 1.0};
+  int favourites = 2;              // punches drawn as a style's favourites ...
+  double favourite_weight = 1.0;   // ... each weighted up by this
+  double hook_duck_share = 0.5;    // a hook seen coming is ducked this often (else blocked)
+  // A straight seen coming: slipped left below slip_left_below, right below slip_right_below, else blocked.
+  double slip_left_below = 0.35, slip_right_below = 0.7;
+  double step_every = 2.0;         // s between footwork requests (a step takes ~0.3 s and settles): the cadence
+  double min_attack_wait = 0.35;   // s, the shortest wait to the next attempt (a punch's own length)
+  double min_attack_rate = 1e-3;   // attempts/s at the least (a stunned boxer's scaled rate, never 0)
+  // s: the first attempt at first_attack plus up to first_attack_spread (both settle into guard first)
+  double first_attack = 1.0, first_attack_spread = 1.0;
+};
+
+// A style drawn from the seed within FighterAiTuning's ranges (aggression, combinations, defence, reaction, body
+// share), and its favourite punches weighted up.
+FighterStyle draw_fighter_style(Rng& rng, const FighterAiTuning& t = FighterAiTuning{});
 
 struct FighterAi {
   Rng rng{1};
+  FighterAiTuning tuning;
   FighterStyle style;
   double next_attack = 1.0;   // s, simulation time of the next attempt
   bool follow_up = false;     // the punch playing asked for a combination
@@ -65,7 +89,7 @@ struct FighterView {
   bool too_close = false;      // crowded: step out
   // A balance step (or its return to the stance) under way, or the feet left where the body cannot fight from
   // (stance_can_fight: crossed, in line, too wide): no footwork asked for. With the stagger, a step_forward over a
-  // return step (match seed 19) and one from a switched stance (seed 5) put the boxer down.
+  // return step or from a switched stance puts the boxer down.
   bool feet_busy = false;
   bool press = false;          // the other boxer was just rocked back: step in after him at once (not at the cadence)
   const char* other_started = nullptr;  // the punch the other boxer started this tick (nullptr: none)

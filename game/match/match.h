@@ -12,8 +12,10 @@
 //      the hit and the crates make it fall; nothing is scripted but the clip;
 //   4. the count: once down and lying still, the stand-up is chosen from the lying pose (getup_back / getup_front)
 //      and tracked physically with a reported root assist; up before count_seconds fights on, else a knock-out;
-//   5. the AI (fighter_ai.h) steers each AI boxer's motion graph: punches when in range, defence after a reaction
-//      time when the other's punch starts.
+//   5. the AI (fighter_ai.h, seeing through fighter_view.h) steers each AI boxer's motion graph: punches when in
+//      range, defence after a reaction time when the other's punch starts.
+// The parts: referee.h (the rules, the count, get-ups, resets), hits.h (punches, openings, hits to damage),
+// fighter_view.h (perception and aim), match_report.h (the report and the HUD); this file's match.cpp runs them.
 // Aimed punches: while a punch plays, the glove's desired path is bent toward the opponent's actual head or body,
 // full at the clip's impact frame (punch_aim.h); the servo and balance QP track it.
 #include <Eigen/Core>
@@ -25,6 +27,9 @@
 #include "game/hud.h"
 #include "game/match/body_parts.h"
 #include "game/match/fighter_ai.h"
+#include "game/match/fighter_view.h"
+#include "game/match/match_report.h"
+#include "game/match/referee.h"
 #include "game/match/replay.h"
 
 namespace boxing {
@@ -32,6 +37,25 @@ namespace boxing {
 struct World;
 
 inline constexpr double kReplaySeconds = 4.0;
+
+// Where best_opening (hits.cpp) looks for an opening: the aim points on the target and the guard's parts as spheres.
+struct OpeningTuning {
+  // Aim points on the head (face, chin, both temples, crown) and torso (solar plexus, both sides of the ribs), m in
+  // the bone's frame (+X forward, +Y left, +Z up) about its centre of mass: more points, finer aim, more to weigh.
+  std::array<Eigen::Vector3d, 5> head{{{0.09, 0, 0.0}, {0.07, 0, -0.07}, {0.03, 0.08, 0.02}, {0.03, -0.08, 0.02},
+                                       {0.05, 0, 0.09}}};
+  std::array<Eigen::Vector3d, 3> torso{{{0.12, 0, -0.08}, {0.08, 0.13, -0.05}, {0.08, -0.13, -0.05}}};
+  double glove_radius = 0.07;       // m, a guarding glove's sphere
+  double upper_arm_radius = 0.055;  // m, the upper arm's two spheres (mid arm and elbow)
+  double elbow_along = 1.8;         // the elbow's sphere at this multiple of the upper arm's com along the bone
+  double forearm_radius = 0.05;     // m, the forearm's two spheres
+  double forearm_near = 0.5, forearm_far = 1.5;  // ... at these multiples of the forearm's com along the bone
+  double hook_side = 0.35;          // m: a hook comes from this far to the striking hand's side of the target
+  double hook_back = 0.1;           // m ... and this far behind it (toward the attacker)
+  double uppercut_below = 0.35;     // m: an uppercut comes from this far below the target
+  double uppercut_back = 0.15;      // m ... and this far behind it
+  double jitter = 0.01;             // m, the seeded AI's tie-break noise on the clearance: more, a less exact aim
+};
 
 // Measured and chosen in docs/decisions/match-fight.md.
 struct MatchTuning {
@@ -41,35 +65,52 @@ struct MatchTuning {
   double strike_speed = 10.0;      // m/s
   double strike_follow = 0.03;     // s
   double strike_rate = 40.0, strike_omega = 40.0, strike_weight = 15.0;  // PunchAim's
+  // m: punches aim this far THROUGH the target's centre, the glove meeting it still accelerating (the servo lags its
+  // target: aimed at the surface, the glove arrives slow); more drives the glove on past the surface.
+  double aim_through = 0.2;
   double switch_to_body_below = 0.04;  // m: a head opening narrower than this sends an AI's punch to the body if wider there
+  OpeningTuning opening;           // best_opening's aim points and guard spheres
+  // The fighter's view (fighter_view.h). m: a straight punch's glove centre ahead of the chest at full extension
+  // (the jab's desired pose at its impact frame).
+  double reach = 0.74;
+  // m past reach still in range (a head's depth). Both out of range is "apart" for the referee: the same bound, else
+  // boxers hovering between the two bounds neither punch nor get brought together.
+  double in_range_margin = 0.08;
+  double too_far_margin = 0.03;    // m past reach: the AI steps in (footwork)
+  double too_close_margin = 0.25;  // m inside reach: the AI steps back out
+  double stunned_attack_scale = 0.4;  // a stunned boxer's punch attempt rate x this
   double land_speed = 2.0;         // m/s, a glove's approach speed on head / torso for a punch to count as landed
   double impact_window = 0.05;     // s, the contact impulse summed this long after the first touch
-  // consciousness lost per N s of impulse on the head: a landed head punch (median 8 N s) takes 0.12, and a boxer up
-  // from a count (0.75) goes down again after about five. At 0.025 (0.2 a punch) one boxer was knocked down 6-10
-  // times a match, fought stunned most of the time and landed 6-10 (docs/decisions/match-fight.md).
+  // Consciousness lost per N s of impulse on the head: a landed head punch (median 8 N s) takes 0.12, and a boxer up
+  // from a count (0.75) goes down again after about five; more keeps a boxer down and stunned (match-fight.md).
   double head_damage_per_ns = 0.015;
   double body_damage_per_ns = 0.01;   // ... on the torso
   double knockdown_damage = 0.35;     // one hit taking this much is a knockdown
   double knockdown_below = 0.15;     // consciousness below this after a hit is a knockdown
   double stun_below = 0.6;           // stunned (lower gains, slower punches) below this consciousness
-  // Servo gains' scale when stunned: at 0.7 a stunned boxer swayed 30-45 deg off its pose on its softer legs and went
-  // over on its own 1-7 s after the last punch on it (every fall without a hit, 6 on seeds 1-20; 2 at 0.85).
+  double unstun_margin = 0.05;       // ... and back in guard at stun_below + this (no flicker at the bound)
+  // Servo gains' scale when stunned: lower, a stunned boxer sways off its pose on its softer legs and goes over on
+  // its own with no punch on it (docs/decisions/match-fight.md).
   double stunned_gain_scale = 0.85;
   double recovery_rate = 0.01;       // consciousness per second recovered (after recovery_delay)
   double recovery_delay = 1.0;       // s after the last hit
+  // s: a fall this long after a landed hit on the boxer is the hit's (falls_after_hit, balance_steps_after_hit),
+  // later it is a fall without a hit.
+  double fall_after_hit_window = 1.5;
   double still_speed = 0.4;          // m/s, pelvis speed under which a downed boxer lies still
   double still_time = 0.6;           // s lying still before the stand-up starts
   double min_down_time = 1.2;        // s down before the stand-up at the earliest
+  double getup_consciousness = 0.6;  // consciousness set at the stand-up's start (the servo's gains with it)
   double count_seconds = 10.0;       // the referee's count: not up in time = knock-out
   double up_height = 0.8;            // share of the standing pelvis height that counts as up (with guard playing)
   double settle_time = 0.5;          // s up and still before the fight goes on
   double after_count = 0.75;         // consciousness at least this once up from a knockdown
   double neutral_corner_within = 1.6;  // m, pelvis to pelvis: at a get-up's start a standing opponent this close goes to its mark
-  // A boxer getting up: its thighs pass through each other, as they pass through the opponent (pass_through_opponent).
-  // Colliding, a leg the get-up left behind the other, swung forward by the guard's stance, rose until it stood
-  // straight out behind (caught on the other thigh: passing, the same get-up ends), the boxer on one foot held by the
-  // root assist to the end of the run: 5 of matches 1-100 (seeds 1, 5, 73, 80, 98; 23-169 s), and match 13's get-up
-  // took 65.7 s. Passing: none, the longest get-up 6.0 s (docs/decisions/match-fight.md).
+  // m: a boxer set back on its mark (back_to_marks) is lifted when a body sinks deeper than this into the crates
+  // under it; less lifts for contacts the solver resolves anyway.
+  double reset_clearance = 0.03;
+  // A boxer getting up: its thighs pass through each other, as they pass through the opponent: colliding, a leg left
+  // behind the other caught on the other thigh and the boxer stood on one foot (docs/decisions/match-fight.md).
   bool getup_thighs_pass = true;
   // s in the stand-up without getting up: it is given up, the boxer sinks back (down, limp) and starts it again (the
   // stand-up is not a balance the body can always finish from where it got to; a retry starts it from the ground).
@@ -77,17 +118,13 @@ struct MatchTuning {
   double apart_time = 2.0;           // s both out of reach before the referee brings them back to their marks
   double step_in_after_hit = 2.0;    // s after a landed hit before the AI steps in (footwork) again
   // A hard hit short of a knockdown rocks the boxer back: at this much damage or more the stagger clip (two steps
-  // back, carried like any clip's steps; the balance steps catch the rest) plays instead of the reaction in place
-  // (0 = never).
+  // back; the balance steps catch the rest) plays instead of the reaction in place (0 = never).
   double rock_damage = 0.25;
-  // s after rocking the opponent back that the AI presses him: steps in as soon as it is free and out of reach, not
-  // at the footwork's cadence (one step per 2 s). Without it the rocked boxer ended out of reach and the referee
-  // brought them back (docs/decisions/footwork.md).
+  // s after rocking the opponent back that the AI presses him: steps in as soon as free and out of reach, not at the
+  // footwork's cadence, so the rocked boxer does not end out of reach (docs/decisions/footwork.md).
   double press_for = 4.0;
-  // The balance's re-placement of a foot a recovery left on an edge (BalanceStepTuning::replace_edge_foot): not in the
-  // fight. There the footwork's carried steps put the feet on footholds of their own every few seconds, and the
-  // re-placements' weight shifts and steps (88 more return steps) kept the boxers from closing in: matches on seeds
-  // 1-100, 49 apart resets against 20, falls without a hit 10 against 7 (docs/decisions/balance-steps.md).
+  // The balance's re-placement of a foot a recovery left on an edge (BalanceStepTuning::replace_edge_foot): off in the
+  // fight, whose carried steps re-place the feet; its weight shifts and steps kept the boxers apart (balance-steps.md).
   bool replace_edge_feet = false;
   // The boxers' balance QP priorities in the fight (BalanceQpTuning::trunk_weight, com_weight; 1 / 1 elsewhere).
   double trunk_weight = 100.0;
@@ -141,10 +178,10 @@ struct MatchFighter {
   int queued = 0;
   int commands_taken = 0;        // player commands the motion graph accepted
   int thrown = 0, landed = 0, knockdowns = 0, falls_without_hit = 0;
-  // Of the knockdowns, those the match did not call: the boxer fell on its own within kFallWithoutHitWindow of a
+  // Of the knockdowns, those the match did not call: the boxer fell on its own within fall_after_hit_window of a
   // landed hit (rocked and went over; what a balance step is for).
   int falls_after_hit = 0;
-  // The boxer's balance steps (--stepping): those started within kFallWithoutHitWindow of a landed hit on it (a
+  // The boxer's balance steps (--stepping): those started within fall_after_hit_window of a landed hit on it (a
   // boxer rocked by a punch stepping), of all it took (BoxerMetrics::balance_steps, counted here as they start).
   int balance_steps_after_hit = 0, balance_steps_seen = 0;
   int last_clip = -1;            // the graph clip of the last tick
@@ -197,16 +234,5 @@ void match_before_control(World& w);
 void match_after_step(World& w);
 // The player's command for boxer k, queued (the boxer becomes the player's from now on).
 void match_command(World& w, int k, FightCommand c);
-// The referee's reset: boxer `only` (-1: both) set at rest on its mark in guard, its walk and control started over.
-void back_to_marks(World& w, int only = -1);
-// Boxer k's straight punch reaches the other's head (the AI's "in range"; both out of it is the referee's "apart").
-bool in_range(const World& w, int k);
-
-// What the match panel shows now (game/hud.h).
-MatchHud match_hud(const World& w);
-
-// The report's "match" block (README: punches_thrown / landed, knockdowns, getups, falls_without_hit, result,
-// events).
-nlohmann::json match_report(const World& w);
 
 }  // namespace boxing

@@ -1,5 +1,5 @@
-// graph-walk: one boxer tracking a seeded random walk of the motion graph alone (the issue: the servo against a
-// 10-minute random walk).
+// graph-walk: one boxer tracking a seeded random walk of the motion graph alone (the servo's test against a 10-minute
+// random walk).
 #include "game/scenarios/scenario_hooks.h"
 
 namespace boxing {

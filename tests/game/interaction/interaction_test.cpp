@@ -9,6 +9,7 @@
 #include <string>
 
 #include "game/cli.h"
+#include "game/interaction/interaction.h"
 #include "game/world.h"
 #include "test_paths.h"
 
@@ -24,7 +25,7 @@ std::unique_ptr<World> make(const std::vector<std::string>& args, std::vector<In
   auto w = boxing::make_world(*o);
   EXPECT_TRUE(w.ok()) << w.error();
   // As --input does: after the scenario's own schedule (impacts), in time order.
-  auto& in = (*w)->interaction.script;
+  auto& in = (*w)->interaction->script;
   in.insert(in.end(), script.begin(), script.end());
   std::stable_sort(in.begin(), in.end(), [](const InputEvent& a, const InputEvent& b) { return a.t < b.t; });
   return std::move(*w);
@@ -81,8 +82,8 @@ TEST(Interaction, HeadDraggedSidewaysFollowsTheTargetAndTheBoxerRecovers) {
       auto w = make({"--scenario", "stand", "--seed", std::to_string(seed)},
                     {drag(2.0, 0, "head", Eigen::Vector3d(0.0, 0.35 * side, 0.0), 1.0)});
       run_until(*w, 7.0);
-      ASSERT_EQ(w->interaction.drag_log.size(), 1u);
-      const auto& d = w->interaction.drag_log[0];
+      ASSERT_EQ(w->interaction->drag_log.size(), 1u);
+      const auto& d = w->interaction->drag_log[0];
       EXPECT_GE(d.max_displacement, 0.2) << "seed " << seed << " side " << side;
       EXPECT_LE(d.peak_force, boxing::kDragNormal.max_force + 1e-6);
       EXPECT_NEAR(d.released_at, 3.0, 1e-9);
@@ -142,9 +143,9 @@ TEST(Interaction, AThrownBallBouncesRollsAndSettlesOnTheFloor) {
   const InputEvent t =
       throw_from(0.5, boxing::ObjectKind::Ball, Eigen::Vector3d(0.0, -2.5, 2.0), Eigen::Vector3d(0.0, -1.0, 0.0));
   auto w = make({"--scenario", "stand", "--seed", "1"}, {t});
-  const int ball = w->interaction.objects[0].body;
+  const int ball = w->interaction->objects[0].body;
   run_until(*w, 0.6);
-  EXPECT_TRUE(w->interaction.objects[0].live);
+  EXPECT_TRUE(w->interaction->objects[0].live);
   bool bounced = false, fell = false;
   while (w->data.time < 12.0) {
     boxing::step_world(*w);
@@ -166,10 +167,10 @@ TEST(Interaction, AThrowStartingInsideABoxerAppearsAboveIt) {
   const Eigen::Vector3d chest = probe->data.com_world[body_of(*probe, 0, "chest")];
   const InputEvent t = throw_from(0.5, boxing::ObjectKind::Ball, chest, Eigen::Vector3d(0.0, 1.0, 0.0));
   auto w = make({"--scenario", "stand", "--seed", "1"}, {t});
-  const int ball = w->interaction.objects[0].body;
+  const int ball = w->interaction->objects[0].body;
   run_until(*w, 0.5);
   boxing::step_world(*w);  // the throw
-  EXPECT_TRUE(w->interaction.objects[0].live);
+  EXPECT_TRUE(w->interaction->objects[0].live);
   EXPECT_GT(w->data.x[ball].p.z(), chest.z() + boxing::kBall.radius);
   double deepest = 0.0;
   for (int i = 0; i < 24; ++i) {
@@ -216,7 +217,7 @@ TEST(Interaction, ViolentRandomDragsKeepTheSimulationFiniteAndOutOfTheCrates) {
       finite = w->data.q.allFinite() && w->data.v.allFinite();
       for (int b = 1; b < int(w->model.bodies.size()); ++b) {
         const Eigen::Vector3d c = w->data.com_world[b];
-        const bool pooled_object = w->interaction.owners[b].boxer < 0;
+        const bool pooled_object = w->interaction->owners[b].boxer < 0;
         if (!pooled_object) {
           const auto& v = w->data.v_body[b];  // [omega; v at the world origin]
           const double speed = (v.tail<3>() + v.head<3>().cross(c)).norm();
@@ -237,7 +238,7 @@ TEST(Interaction, ViolentRandomDragsKeepTheSimulationFiniteAndOutOfTheCrates) {
     EXPECT_TRUE(finite) << "seed " << seed << " at t = " << w->data.time << " after\n" << last_drags;
     EXPECT_LT(max_speed, 30.0) << "seed " << seed << ": " << fastest;
     EXPECT_LT(worst_inside, 0.02) << "seed " << seed << ": a body centre inside a crate / under the floor by (m)";
-    EXPECT_EQ(int(w->interaction.drag_log.size()), 50) << "seed " << seed;
+    EXPECT_EQ(int(w->interaction->drag_log.size()), 50) << "seed " << seed;
   }
 }
 
@@ -246,7 +247,7 @@ TEST(Interaction, ViolentRandomDragsKeepTheSimulationFiniteAndOutOfTheCrates) {
 // coordinate bit for bit.
 TEST(Interaction, RecordedSessionReplaysBitForBit) {
   auto a = make({"--scenario", "stand", "--seed", "2", "--record", "unused.json"});
-  ASSERT_TRUE(a->interaction.recording);
+  ASSERT_TRUE(a->interaction->recording);
   const int frames = 6 * 60;
   for (int f = 0; f < frames; ++f) {
     World& w = *a;
@@ -295,7 +296,7 @@ TEST(Interaction, RecordedSessionReplaysBitForBit) {
     }
     for (int s = 0; s < boxing::kStepsPerFrame; ++s) boxing::step_world(w);
   }
-  const auto& recorded = a->interaction.recorded;
+  const auto& recorded = a->interaction->recorded;
   EXPECT_EQ(int(recorded.size()), 1 + 59 + 1 + 1 + 1 + 1);
   // Through the file form, as --record / --input do.
   const std::string path = std::string(BOXING_BINARY_DIR) + "/interaction_replay.json";
@@ -328,13 +329,13 @@ TEST(Interaction, AGrabbedBallFollowsTheTargetAndClearLetsGoAndParksIt) {
   c.kind = InputKind::Clear;
   c.t = 4.0;
   auto w = make({"--scenario", "stand", "--seed", "1"}, {t, g, m, c});
-  const int ball = w->interaction.objects[0].body;
+  const int ball = w->interaction->objects[0].body;
   run_until(*w, 3.5);
-  EXPECT_TRUE(w->interaction.drags[0].active);
+  EXPECT_TRUE(w->interaction->drags[0].active);
   EXPECT_LT((w->data.com_world[ball] - m.vec).norm(), 0.05);  // held at the target against gravity
   run_until(*w, 4.1);
-  EXPECT_FALSE(w->interaction.drags[0].active);
-  EXPECT_FALSE(w->interaction.objects[0].live);
+  EXPECT_FALSE(w->interaction->drags[0].active);
+  EXPECT_FALSE(w->interaction->objects[0].live);
   EXPECT_GT(w->data.com_world[ball].z(), 3.0);  // parked, away from the arena
 }
 

@@ -53,10 +53,10 @@ TEST(MouseHands, APressOnTheHeadGrabsItTheDragPullsItAndTheReleaseLetsGo) {
   boxing::MouseHands hands;
   ASSERT_TRUE(boxing::hands_press(*w, hands, boxing::camera_ray(cam, px, py, 1280, 720), cam, false));
   for (int s = 0; s < 4; ++s) boxing::step_world(*w);
-  ASSERT_TRUE(w->interaction.drags[0].active);
-  ASSERT_EQ(w->interaction.drag_log.size(), 1u);
-  EXPECT_EQ(w->interaction.drag_log[0].boxer, 0);
-  EXPECT_EQ(w->boxer_desc.skeleton.name[w->interaction.drag_log[0].bone], "head");
+  ASSERT_TRUE(w->interaction->drags[0].active);
+  ASSERT_EQ(w->interaction->drag_log.size(), 1u);
+  EXPECT_EQ(w->interaction->drag_log[0].boxer, 0);
+  EXPECT_EQ(w->boxer_desc.skeleton.name[w->interaction->drag_log[0].bone], "head");
   // The cursor 70 px (0.34 m at the head) to the right (the side camera looks along +y: screen right is +x) for a
   // second.
   for (int f = 0; f < 60; ++f) {
@@ -66,10 +66,10 @@ TEST(MouseHands, APressOnTheHeadGrabsItTheDragPullsItAndTheReleaseLetsGo) {
   const Eigen::Vector3d moved = w->data.com_world[head] - p0;
   EXPECT_GT(moved.x(), 0.2) << moved.transpose();
   // The target stayed on the plane through the grabbed point facing the camera (the side camera's forward is +y).
-  EXPECT_NEAR(w->interaction.drags[0].goal.y(), w->interaction.drags[0].start.y(), 0.05);
+  EXPECT_NEAR(w->interaction->drags[0].goal.y(), w->interaction->drags[0].start.y(), 0.05);
   boxing::hands_release(*w, hands);
   for (int s = 0; s < 4 * 60 * 4; ++s) boxing::step_world(*w);
-  EXPECT_FALSE(w->interaction.drags[0].active);
+  EXPECT_FALSE(w->interaction->drags[0].active);
   EXPECT_FALSE(w->boxers[0].metrics.fell);
   EXPECT_LT((w->data.com_world[head] - p0).norm(), 0.1);  // and back near where it was
 }
@@ -83,7 +83,7 @@ TEST(MouseHands, ABallThrownFromTheCameraHitsTheBoxerUnderTheCursor) {
   boxing::interaction_submit(
       *w, boxing::throw_from_camera(*w, boxing::camera_ray(cam, px, py, 1280, 720), boxing::ObjectKind::Ball));
   for (int s = 0; s < 240; ++s) boxing::step_world(*w);
-  ASSERT_FALSE(w->interaction.object_hits.empty());
-  EXPECT_EQ(w->interaction.object_hits[0].boxer, 1);
-  EXPECT_EQ(w->interaction.object_hits[0].kind, boxing::ObjectKind::Ball);
+  ASSERT_FALSE(w->interaction->object_hits.empty());
+  EXPECT_EQ(w->interaction->object_hits[0].boxer, 1);
+  EXPECT_EQ(w->interaction->object_hits[0].kind, boxing::ObjectKind::Ball);
 }

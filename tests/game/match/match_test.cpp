@@ -11,6 +11,7 @@
 #include "game/interaction/interaction.h"
 #include "game/match/body_parts.h"
 #include "game/match/fighter_ai.h"
+#include "game/match/match.h"
 #include "game/match/punch_aim.h"
 #include "game/world.h"
 
@@ -26,7 +27,7 @@ std::unique_ptr<World> run_match(uint64_t seed, double seconds, const std::funct
   auto w = make_world(o);
   EXPECT_TRUE(w) << w.error();
   if (!w) return nullptr;
-  if (tune) tune((*w)->match.tuning);
+  if (tune) tune((*w)->match->tuning);
   for (int i = 0; i < static_cast<int>(seconds * 240); ++i) step_world(**w);
   return std::move(*w);
 }
@@ -34,7 +35,7 @@ std::unique_ptr<World> run_match(uint64_t seed, double seconds, const std::funct
 TEST(Match, PunchesLandOnlyThroughTheStrikingGloveOnHeadOrTorsoAtSpeed) {
   auto w = run_match(1, 40.0);
   ASSERT_TRUE(w);
-  const Match& m = w->match;
+  const Match& m = *w->match;
   int thrown[2] = {0, 0}, landed[2] = {0, 0};
   for (size_t i = 0; i < m.events.size(); ++i) {
     const PunchEvent& e = m.events[i];
@@ -74,7 +75,7 @@ TEST(Match, PunchesLandOnlyThroughTheStrikingGloveOnHeadOrTorsoAtSpeed) {
 TEST(Match, KnockedDownBoxerGetsUpFromTheWayItLiesWithinTheCount) {
   auto w = run_match(6, 13.0);
   ASSERT_TRUE(w);
-  const Match& m = w->match;
+  const Match& m = *w->match;
   ASSERT_FALSE(m.getups.empty()) << "seed 6 has a knockdown in its first 13 s (boxer 0 at 3.5 s, on its back, up at "
                                     "8.4 s; scripts/match-sweep)";
   const GetUp& g = m.getups.front();
@@ -98,7 +99,7 @@ TEST(Match, KnockedDownBoxerGetsUpFromTheWayItLiesWithinTheCount) {
 TEST(Match, BoxerUpFromAKnockdownStandsOnItsMarkAsAtTheStart) {
   auto w = run_match(6, 9.0);
   ASSERT_TRUE(w);
-  const Match& m = w->match;
+  const Match& m = *w->match;
   ASSERT_FALSE(m.getups.empty()) << "seed 6: red down at 3.5 s, up at 8.4 s (scripts/match-sweep)";
   const GetUp& g = m.getups.front();
   ASSERT_GE(g.up_at, 0.0);
@@ -119,7 +120,7 @@ TEST(Match, AGetUpsLegCannotCatchOnTheOtherThigh) {
       t.stand_up_give_up = 1e9;
     });
     ASSERT_TRUE(w);
-    const Match& m = w->match;
+    const Match& m = *w->match;
     ASSERT_FALSE(m.getups.empty()) << "seed 80: red down at 11.1 s";
     const GetUp& g = m.getups.front();
     EXPECT_EQ(g.boxer, 0);
@@ -138,7 +139,7 @@ TEST(Match, AGetUpsLegCannotCatchOnTheOtherThigh) {
 TEST(Match, AStandUpThatDoesNotEndIsGivenUpAndStartedAgain) {
   auto w = run_match(80, 30.0, [](MatchTuning& t) { t.getup_thighs_pass = false; });
   ASSERT_TRUE(w);
-  const Match& m = w->match;
+  const Match& m = *w->match;
   ASSERT_FALSE(m.getups.empty()) << "seed 80: red down at 11.1 s";
   const GetUp& g = m.getups.front();
   EXPECT_GE(g.retries, 1);
@@ -175,7 +176,7 @@ TEST(MatchSteps, AShoveTheRootAssistCannotHoldIsCaughtByBalanceSteps) {
         push.duration = 0.2;
         interaction_submit(w, push);
         for (int i = 0; i < int(2.5 * 240); ++i) step_world(w);
-        for (const GetUp& g : w.match.getups) down[stepping] += g.boxer == 0 && g.down_at >= 5.0;
+        for (const GetUp& g : w.match->getups) down[stepping] += g.boxer == 0 && g.down_at >= 5.0;
         steps[stepping] += w.boxers[0].metrics.balance_steps;
       }
   EXPECT_EQ(steps[0], 0);
@@ -195,8 +196,8 @@ TEST(Match, AHardHitRocksTheBoxerBack) {
     auto w = run_match(kSeed, 7.0, [rock](MatchTuning& t) { t.rock_damage = rock; });
     if (!w) return 0.0;
     const Boxer &a = w->boxers[1 - kRocked], &b = w->boxers[kRocked];
-    *rocked = w->match.fighter[kRocked].rocked;
-    *downs = static_cast<int>(w->match.getups.size());
+    *rocked = w->match->fighter[kRocked].rocked;
+    *downs = static_cast<int>(w->match->getups.size());
     return (b.ctl.mark - a.ctl.mark).normalized().dot(w->data.x[b.bodies.body[0]].p.head<2>() - b.ctl.mark);
   };
   int rocked = 0, downs = 0, rocked_off = 0, downs_off = 0;
@@ -263,7 +264,7 @@ TEST(Match, SameSeedGivesTheSameFight) {
   auto a = run_match(2, 12.0), b = run_match(2, 12.0);
   ASSERT_TRUE(a && b);
   EXPECT_EQ(match_report(*a).dump(), match_report(*b).dump());
-  EXPECT_FALSE(a->match.events.empty());
+  EXPECT_FALSE(a->match->events.empty());
 }
 
 // A player's boxer (--player) takes no AI decision: with no keys pressed it throws nothing while the AI's does, and
@@ -291,8 +292,8 @@ TEST(Match, StandingBoxersOutOfRangeAreBroughtTogether) {
     longest = std::max(longest, apart);
   }
   // (Not while a boxer presses a rocked opponent, MatchTuning::press_for: its steps close the gap.)
-  EXPECT_LE(longest, world.match.tuning.press_for + world.match.tuning.apart_time + 0.05);
-  EXPECT_GT(world.match.fighter[0].thrown + world.match.fighter[1].thrown, 50);  // and the fight goes on
+  EXPECT_LE(longest, world.match->tuning.press_for + world.match->tuning.apart_time + 0.05);
+  EXPECT_GT(world.match->fighter[0].thrown + world.match->fighter[1].thrown, 50);  // and the fight goes on
 }
 
 // The referee's reset starts the balance's steps over with the rest of the control: a recovery or a return step's
@@ -303,9 +304,9 @@ TEST(Match, AResetToTheMarksStartsTheBalancesStepsOver) {
   World& world = *w;
   eng::control::BalanceStepState& st = world.boxers[0].ctl.balance_steps;
   st.recovering = true, st.shifting = 1, st.steps_in_recovery = 2, st.settled = 0.3;
-  const int resets = world.match.resets;
+  const int resets = world.match->resets;
   back_to_marks(world);
-  EXPECT_EQ(world.match.resets, resets + 1);
+  EXPECT_EQ(world.match->resets, resets + 1);
   EXPECT_FALSE(st.recovering);
   EXPECT_EQ(st.shifting, -1);
   EXPECT_EQ(st.steps_in_recovery, 0);
@@ -325,24 +326,24 @@ TEST(Match, PlayersBoxerPunchesOnlyOnCommand) {
   ASSERT_TRUE(w) << w.error();
   World& world = **w;
   for (int i = 0; i < 8 * 240; ++i) step_world(world);
-  EXPECT_EQ(world.match.fighter[0].thrown, 0);
-  EXPECT_GT(world.match.fighter[1].thrown, 0);
+  EXPECT_EQ(world.match->fighter[0].thrown, 0);
+  EXPECT_GT(world.match->fighter[1].thrown, 0);
   match_command(world, 0, FightCommand::Cross);
-  for (int i = 0; i < 3 * 240 && world.match.fighter[0].commands_taken == 0; ++i) step_world(world);
+  for (int i = 0; i < 3 * 240 && world.match->fighter[0].commands_taken == 0; ++i) step_world(world);
   for (int i = 0; i < 240; ++i) step_world(world);
-  EXPECT_EQ(world.match.fighter[0].commands_taken, 1);
-  EXPECT_EQ(world.match.fighter[0].thrown, 1);
+  EXPECT_EQ(world.match->fighter[0].commands_taken, 1);
+  EXPECT_EQ(world.match->fighter[0].thrown, 1);
   int red_crosses = 0;
-  for (const PunchEvent& e : world.match.events) red_crosses += e.boxer == 0 && e.punch == "cross";
+  for (const PunchEvent& e : world.match->events) red_crosses += e.boxer == 0 && e.punch == "cross";
   EXPECT_EQ(red_crosses, 1);
   // Keys pressed faster than the punches play are buffered and thrown in order, none lost.
   for (FightCommand c : {FightCommand::Jab, FightCommand::Cross, FightCommand::Jab}) match_command(world, 0, c);
-  EXPECT_EQ(world.match.fighter[0].queued, 3);
-  for (int i = 0; i < 6 * 240 && world.match.fighter[0].queued > 0; ++i) step_world(world);
+  EXPECT_EQ(world.match->fighter[0].queued, 3);
+  for (int i = 0; i < 6 * 240 && world.match->fighter[0].queued > 0; ++i) step_world(world);
   for (int i = 0; i < 240; ++i) step_world(world);
-  EXPECT_EQ(world.match.fighter[0].commands_taken, 4);
+  EXPECT_EQ(world.match->fighter[0].commands_taken, 4);
   std::vector<std::string> red;
-  for (const PunchEvent& e : world.match.events)
+  for (const PunchEvent& e : world.match->events)
     if (e.boxer == 0) red.push_back(e.punch);
   EXPECT_EQ(red, (std::vector<std::string>{"cross", "jab", "cross", "jab"}));
 }
@@ -371,7 +372,7 @@ TEST(ReplayBuffer, KeepsTheNewestFramesInOrder) {
 TEST(Match, RecordsTheLastSecondsForTheReplay) {
   auto w = run_match(1, 6.0);
   ASSERT_TRUE(w);
-  const ReplayBuffer& rb = w->match.replay;
+  const ReplayBuffer& rb = w->match->replay;
   ASSERT_EQ(rb.count(), static_cast<int>(kReplaySeconds * 60));
   EXPECT_NEAR(rb.time(rb.count() - 1), w->data.time, 1e-9);
   EXPECT_NEAR(rb.time(rb.count() - 1) - rb.time(0), kReplaySeconds - 1.0 / 60.0, 1e-9);
@@ -420,12 +421,12 @@ TEST(Match, StrikeTaskBringsTheFistInAtARealPunchsSpeed) {
   auto on = run_match(2, 60.0);
   auto off = run_match(2, 60.0, [](MatchTuning& t) { t.strike_speed = 0.0; t.punch_arm_gain = 1.8; });
   ASSERT_TRUE(on && off);
-  EXPECT_GE(median_of(on->match, true, &PunchEvent::fist_speed), 5.6);
-  const double peak_on = median_of(on->match, false, &PunchEvent::peak_speed);
-  const double peak_off = median_of(off->match, false, &PunchEvent::peak_speed);
+  EXPECT_GE(median_of(*on->match, true, &PunchEvent::fist_speed), 5.6);
+  const double peak_on = median_of(*on->match, false, &PunchEvent::peak_speed);
+  const double peak_off = median_of(*off->match, false, &PunchEvent::peak_speed);
   EXPECT_GT(peak_on, peak_off + 0.5) << peak_on << " vs " << peak_off;
   int landed = 0;
-  for (const MatchFighter& f : on->match.fighter) landed += f.landed;
+  for (const MatchFighter& f : on->match->fighter) landed += f.landed;
   EXPECT_GE(landed, 8);
 }
 

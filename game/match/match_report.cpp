@@ -1,0 +1,110 @@
+#include "game/match/match_report.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "game/match/match.h"
+#include "game/world.h"
+
+namespace boxing {
+
+MatchHud match_hud(const World& w) {
+  const Match& mt = *w.match;
+  MatchHud h;
+  const double t = w.data.time;
+  h.round = static_cast<int>(t / mt.round_seconds) + 1;
+  h.clock_s = std::max(0.0, h.round * mt.round_seconds - t);
+  for (int k = 0; k < 2 && k < static_cast<int>(w.boxers.size()); ++k) {
+    const MatchFighter& f = mt.fighter[k];
+    h.side[k].consciousness = static_cast<float>(w.boxers[k].ctl.root_spring.consciousness());
+    h.side[k].landed = f.landed, h.side[k].thrown = f.thrown, h.side[k].knockdowns = f.knockdowns;
+    h.side[k].player = f.player;
+    h.side[k].state = boxer_state_name(w.boxers[k].ctl.state.state);
+    if (f.getup >= 0 && !mt.over) {
+      const int down_s = static_cast<int>(t - mt.getups[f.getup].down_at);
+      const int count = std::min(static_cast<int>(mt.tuning.count_seconds), down_s + 1);
+      h.banner = std::string(k == 0 ? "RED" : "BLUE") + " DOWN   " + std::to_string(count);
+    }
+  }
+  if (mt.over) h.banner = mt.result;
+  return h;
+}
+
+nlohmann::json match_report(const World& w) {
+  const Match& mt = *w.match;
+  nlohmann::json events = nlohmann::json::array();
+  for (const PunchEvent& e : mt.events)
+    events.push_back({{"t", e.t},
+                      {"boxer", e.boxer},
+                      {"punch", e.punch},
+                      {"target", e.target},
+                      {"landed", e.landed},
+                      {"blocked", e.blocked},
+                      {"hit", e.hit_part},
+                      {"other_clip", e.other_clip},
+                      {"speed", e.speed},
+                      {"fist_speed", e.fist_speed},
+                      {"peak_speed", e.peak_speed},
+                      {"opening_m", e.opening},
+                      {"consciousness", e.consciousness},
+                      {"impulse", e.impulse},
+                      {"damage", e.damage}});
+  nlohmann::json getups = nlohmann::json::array();
+  for (const GetUp& g : mt.getups)
+    getups.push_back({{"boxer", g.boxer},
+                      {"down_at_s", g.down_at},
+                      {"up_at_s", g.up_at >= 0.0 ? nlohmann::json(g.up_at) : nlohmann::json(nullptr)},
+                      {"lying", g.lying.empty() ? nlohmann::json(nullptr) : nlohmann::json(g.lying)},
+                      {"root_assist_rms_nm", g.assist_time > 0 ? std::sqrt(g.assist_sq_dt / g.assist_time) : 0.0},
+                      {"reset_lift_m", g.reset_lift},
+                      {"reset_feet_off_m", g.reset_feet_off},
+                      {"root_assist_force_rms_n", g.assist_time > 0 ? std::sqrt(g.assist_force_sq_dt / g.assist_time) : 0.0},
+                      {"stand_up_s", g.assist_time},
+                      {"stand_up_retries", g.retries}});
+  auto pair = [&mt](auto get) { return nlohmann::json::array({get(mt.fighter[0]), get(mt.fighter[1])}); };
+  std::string result = mt.result;
+  if (result.empty()) {
+    const int a = mt.fighter[0].landed, b = mt.fighter[1].landed;
+    result = a == b ? "draw on points (" + std::to_string(a) + "-" + std::to_string(b) + " landed)"
+                    : "points: boxer " + std::to_string(a > b ? 0 : 1) + " wins (" + std::to_string(a) + "-" +
+                          std::to_string(b) + " landed)";
+  }
+  std::vector<double> speeds, fists;
+  for (const PunchEvent& e : mt.events)
+    if (e.landed) speeds.push_back(e.speed), fists.push_back(e.fist_speed);
+  std::sort(speeds.begin(), speeds.end());
+  std::sort(fists.begin(), fists.end());
+  return {{"punches_thrown", pair([](const MatchFighter& f) { return f.thrown; })},
+          {"punches_landed", pair([](const MatchFighter& f) { return f.landed; })},
+          {"knockdowns", pair([](const MatchFighter& f) { return f.knockdowns; })},
+          {"falls_without_hit", pair([](const MatchFighter& f) { return f.falls_without_hit; })},
+          {"falls_after_hit", pair([](const MatchFighter& f) { return f.falls_after_hit; })},
+          {"balance_steps_after_hit", pair([](const MatchFighter& f) { return f.balance_steps_after_hit; })},
+          {"rocked", pair([](const MatchFighter& f) { return f.rocked; })},
+          {"landed_speed_median", speeds.empty() ? 0.0 : speeds[speeds.size() / 2]},
+          {"landed_fist_speed_median", fists.empty() ? 0.0 : fists[fists.size() / 2]},
+          {"consciousness", pair([&w](const MatchFighter& f) {
+             const int k = static_cast<int>(&f - &w.match->fighter[0]);
+             return w.boxers[k].ctl.root_spring.consciousness();
+           })},
+          {"players", pair([](const MatchFighter& f) { return f.player; })},
+          {"styles", pair([](const MatchFighter& f) {
+             const FighterStyle& s = f.ai.style;
+             return nlohmann::json{{"attack_rate", s.attack_rate}, {"combo", s.combo}, {"defence", s.defence},
+                                   {"reaction_s", s.reaction_s}, {"body_share", s.body_share},
+                                   {"punch_weight", s.punch_weight}};
+           })},
+          {"player_commands_taken", pair([](const MatchFighter& f) { return f.commands_taken; })},
+          {"round_seconds", mt.round_seconds},
+          {"resets_to_marks", mt.resets},
+          {"apart_resets", mt.apart_resets},
+          {"round", static_cast<int>(w.data.time / mt.round_seconds) + 1},
+          {"ended_at_s", w.data.time},  // the run's end: a knockdown less than the count before it has no up_at_s yet
+          {"getups", getups},
+          {"result", result},
+          {"events", events}};
+}
+
+}  // namespace boxing
