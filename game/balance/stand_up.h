@@ -1,7 +1,7 @@
 #pragma once
 // The stand-up (BoxerState::GettingUp, the match's get-up from the crates or the floor). The balance QP plans a body
-// standing on its feet; lying, every link pressed on the ground, its torques made the limbs flail (docs/decisions:
-// qp_balance.cpp's DOWN note). So a stand-up is tracked by the world-space servo's own torques (eq. 3, explicit,
+// standing on its feet; lying, every link pressed on the ground, its torques make the limbs flail (qp_balance.cpp,
+// down_or_getting_up). So a stand-up is tracked by the world-space servo's own torques (eq. 3, explicit,
 // every bone toward the get-up clip) with the root assist: the paper's root spring (section V) with its position
 // term, a force- and torque-limited spring-damper pulling the pelvis toward the clip's root (position and
 // orientation), external, no reaction. Its use is reported per get-up (the report's match.getups[].root_assist_*).
@@ -25,11 +25,10 @@ struct StandUpTuning {
     return p;
   }();
   // Share of the body's weight the assist carries as a feed-forward (the rest is the legs' and arms' work): without it
-  // the position spring sagged 0.3 m under the weight and the boxer stayed crouched (docs/decisions/match-fight.md).
+  // the position spring sags under the weight and the boxer stays crouched (docs/decisions/match-fight.md).
   double weight_share = 0.85;
-  // N m per joint (vector norm). Explicit, the servo's leg gains (sized for moving the body over a planted foot) on
-  // a foot the chaos soak's drags and crates knocked loose diverged to NaN in 6 of 12 matches; at 150 N m none did and
-  // every knockdown under chaos got up (match seed 11); at 300 N m one still ran to 37 m/s.
+  // N m per joint (vector norm): the servo's explicit leg gains, sized for moving the body over a planted foot, diverge
+  // on a foot knocked loose when stronger (docs/decisions/balance-qp-code-history.md).
   double joint_torque_limit = 150.0;
 };
 

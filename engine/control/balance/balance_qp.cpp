@@ -75,7 +75,7 @@ void chol_solve(const QpVecK& q, const std::vector<int>& P, int np, const QpMatK
 
 // Lawson & Hanson's active-set NNLS ("Solving Least Squares Problems", 1974, ch. 23) in normal-equation form:
 // min 1/2 x^T Q x - q^T x subject to x >= 0, Q symmetric positive definite. Exact in a finite number of steps
-// (projected Gauss-Seidel needed thousands of sweeps here: Q = A^T A has rank 6 plus a tiny ridge). The passive
+// (projected Gauss-Seidel needs thousands of sweeps here: Q = A^T A has rank 6 plus a tiny ridge). The passive
 // set's system is solved from a Cholesky factor grown one row per added variable (above), not refactored.
 void nnls(const QpMatKK& Q, const QpVecK& q, BalanceQp& ws, QpVecK& x) {
   const int K = static_cast<int>(q.size());
@@ -358,8 +358,8 @@ void balance_qp_solve(const physics::Model& m, const physics::Data& d, const Bal
     ws.q.noalias() -= ws.SF.transpose() * ws.lambda;
     // Joint torques priced too (minimum effort): tau_joints = T1 beta + t0 is affine in beta like qacc. Without it
     // the torques are free in the plan, and a body touching the crates at several links (a knee and a foot) could be
-    // planned with large opposing contact forces (the ridge alone let a knee landing ask 38 kN m: walk seed 6,
-    // root assist on, 192 s, the simulation then diverged).
+    // planned with large opposing contact forces (the ridge alone lets a knee landing ask tens of kN m and the
+    // simulation diverge: docs/decisions/balance-qp-tuning.md).
     if (p.w_torque > 0.0 && n > 6) {
       const int nj = n - 6;
       ws.HQ1.noalias() = M.bottomRows(nj) * ws.Y;  // (M Q1)_joints = (M_joints Y) S^-1 F, 6 deep again
@@ -381,8 +381,8 @@ void balance_qp_solve(const physics::Model& m, const physics::Data& d, const Bal
     nnls(ws.Q, ws.q, ws, ws.beta);
     // The torque limit: where the plan asks for more, the assist's price goes up until the plan fits the limit (the
     // smallest price found that does, by factors of 10 then bisection in log price), so the plan is made within the
-    // limit rather than clipped after it (a clipped plan's body misses its accelerations; clipping alone: walk 60 s
-    // at price 0.3, rms 58 N m and falls where it clipped).
+    // limit rather than clipped after it (a clipped plan's body misses its accelerations and falls where it clips:
+    // docs/decisions/balance-qp-tuning.md).
     if (na > 0 && assist_norm(ws.beta, nc) > p.max_root_assist) {
       const Eigen::Matrix<double, 6, 1> base = ws.Q.diagonal().tail<6>().array() - p.w_root_assist;
       auto solve_at = [&](double price) {

@@ -6,7 +6,7 @@
 // WHY. The world-space servo (eq. 3, as implicit joint springs) plus a PD shift of the desired root holds
 // quiet stances and 150 N pushes, but a punch's whole-body motion (a 5 cm lunge with the arm thrown forward)
 // asks the feet for a ground reaction the soles cannot give: the feet roll onto an edge, the legs leave the
-// support path and the boxer falls (issue 5 diagnosis, README). What the body needs is Kudoh's balance QP
+// support path and the boxer falls (README). What the body needs is Kudoh's balance QP
 // (thesis sec. 2.5: centre-of-mass acceleration as PD toward its target, ZMP kept in the support area, joint
 // accelerations as the unknowns): find the accelerations the ground CAN support, closest to the desired ones.
 //
@@ -29,8 +29,8 @@
 // non-negative least squares, solved exactly by Lawson & Hanson's active set. Then tau = M qacc + c - J^T f; its
 // root rows vanish by construction. Where the desired com acceleration is not admissible the solution trades it
 // against tracking inside the cones (arms and trunk take up the angular momentum: Kudoh's arm swing and waist
-// bend), and the torques never ask the feet to pull or slide. (Two stages -- reaction first, accelerations
-// after, as Lee & Goswami -- was tried first: the reaction, chosen blind to tracking, made the arms flail.)
+// bend), and the torques never ask the feet to pull or slide. (One QP, not two stages -- reaction first,
+// accelerations after, as Lee & Goswami --: a reaction chosen blind to the tracking makes the arms flail.)
 //
 // All quantities world frame; the articulation is a contiguous DoF block [dof_begin, dof_end) whose first six
 // DoFs are the free root joint. Uses forward_kinematics results (x, com_world, v_body, cdof, cdof_dot).
@@ -69,8 +69,7 @@ struct QpPointTask {
   double weight = 1.0;
   // ref_body >= 0 (an ancestor of body, e.g. the root): the task is on the point's acceleration relative to ref_point
   // fixed to ref_body, acc = a_point - a_ref: a swing foot driven by its own leg. (On its world acceleration, with the
-  // com priced low during a balance step, the plan carried the whole body after the foot: the pelvis yawed 40-70 deg
-  // and the com rose 15 cm in a crossing step.)
+  // com priced low during a balance step, the plan carries the whole body after the foot.)
   int ref_body = -1;
   Vec3 ref_point = Vec3::Zero();
 };
@@ -110,22 +109,17 @@ struct BalanceQpParams {
   double w_torque = 0.0;    // weight on the joint torques (per (N m)^2): minimum effort, bounds internal forces
   double w_hold = 1e4;      // weight of "contact points do not accelerate" (per (m/s^2)^2)
   double hold_damping = 20.0;  // 1/s: the held points' target acceleration is -hold_damping * their velocity
-  // Joint limits (the step's limit rows, built by step1: a ball joint's swing cone and twist, a hinge's range). The
-  // step stops a joint at its limit with an impulse the plan did not count on: at the rear ankle during a cross it
-  // yanked the foot off its planned contact forces and the foot slid. A joint within limit_margin of a limit gets a
-  // task: its limit coordinate C accelerates at limit_kp (limit_margin - C) - limit_kd dC/dt (back inside the
-  // margin), priced w_limit per (rad/s^2)^2; none where that is negative (moving off the limit: free). 0 = off.
-  double w_limit = 0.0;
+  // Joint limits (step1's limit rows: a ball joint's swing cone and twist, a hinge's range), which the step enforces
+  // with an impulse the plan does not count on (docs/decisions/foot-slide.md). A joint within limit_margin of a limit
+  // gets a task: its limit coordinate C accelerates at limit_kp (limit_margin - C) - limit_kd dC/dt.
+  double w_limit = 0.0;        // per (rad/s^2)^2 (no task where that target is negative: moving off); 0 = off
   double limit_margin = 0.05;  // rad
   double limit_kp = 400.0;     // 1/s^2
   double limit_kd = 40.0;      // 1/s
-  // Root assist (the paper's root spring, section V: "for some dynamic balance situations a root spring applies
-  // torques at the root, however these are torque limited"), here as an unknown of the QP: an external torque on
-  // the root body, priced at w_root_assist per (N m)^2, so the plan takes it only where the ground reaction cannot
-  // give the com and momentum targets, and held within max_root_assist (where the plan asks for more, the price is
-  // raised until it fits; a final clamp takes any rest). 0 = off (the floating base unactuated).
-  double w_root_assist = 0.0;
-  double max_root_assist = 100.0;  // N m
+  // Root assist (the paper's root spring, section V, torque limited) as an unknown of the QP: an external torque on
+  // the root body, so the plan takes it only where the ground reaction cannot give the com and momentum targets.
+  double w_root_assist = 0.0;      // per (N m)^2; 0 = off (the floating base unactuated)
+  double max_root_assist = 100.0;  // N m (asked for more, the price is raised until it fits; a final clamp takes the rest)
 };
 
 struct BalanceQpResult {
