@@ -172,7 +172,7 @@ void fit_support_legs(const eng::physics::Model& m, eng::physics::Data& d, const
   for (int k = 0; k < 2; ++k) {
     // A planted leg aims at its actual ankle (closed-loop consistency: the legs agree through the ground), lowered
     // by however much higher the ankle stands over its sole's lowest end than the clip's does: a foot left up on
-    // its toes (seed 1's rear foot after a cross: heel 40 deg up, no load, for seconds) is pressed back down flat
+    // its toes (a rear foot after a cross-over: heel up, no load, for seconds) is pressed back down flat
     // instead of being held there; a flat foot is aimed exactly where it is.
     ankles[k] = P[legs[k].foot];
     // A stepping leg aims at its step's target (the bones' orientation tasks then agree with the ankle's).

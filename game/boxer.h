@@ -218,10 +218,9 @@ void boxer_sense_contacts(const eng::physics::Data& d, Boxer& b);
 // A boxer's joints get the engine's soft speed limit (eng::physics::Body::max_speed, kLimpJointMaxSpeed) while it
 // falls, lies or gets up, or is handled by the player's hands (BoxerControlState::handled_until: dragged, pushed,
 // struck by a thrown object or by the other boxer while that one is handled), none while it stands. Why: a limp arm
-// flung by a strong drag whipped at 84 rad/s (gloves over 30 m/s, the chaos soak, issue 19); standing, the elbows of
-// our punches and blocks reach 60-86 rad/s (a 60 s match, seed 3) and a 30 rad/s limit on every joint at all times
-// slowed the landed punches from 7.2 to 6.0-6.2 m/s.
-// Handled: a boxer yanked by a strong drag of its head, still on its feet, whipped a glove to 31 m/s (the chaos soak).
+// flung by a strong drag, or the glove of a boxer yanked by its head while still on its feet, whips at over 80 rad/s
+// (gloves over 30 m/s); standing, the elbows of punches and blocks reach 60-86 rad/s, and a 30 rad/s limit on every
+// joint at all times slows the landed punches (docs/decisions/joint-speed.md).
 inline constexpr double kLimpJointMaxSpeed = 30.0;  // rad/s
 void boxer_joint_speed_limits(eng::physics::Model& m, const Boxer& b, double time);
 
@@ -236,9 +235,11 @@ double assist_reach(const eng::physics::Model& m, const Boxer& b);
 // to out[k]. The report's leg-overlap metric and the balance QP's leg clearance read them.
 void list_leg_geoms(const Boxer& b, std::vector<int> (&out)[2]);
 
-// After a physics step: the metrics (upright time, com speed, tracking error, trace), then the state machine (a
-// fall: Guard -> Down), which the metrics then record.
+// After a physics step: the metrics (com speed, tracking error, foot slide, trace); observe only.
 void boxer_measure(const eng::physics::Model& m, const eng::physics::Data& d, const eng::assets::CharacterDesc& desc,
                    Boxer& b, double dt);
+// After boxer_measure: the fall detection (the state machine: a fall, Guard -> Down), which control reads on the next
+// tick; the metrics record the first fall and the time upright before it (game/fall_detection.cpp).
+void detect_fall(const eng::physics::Data& d, Boxer& b, double dt);
 
 }  // namespace boxing

@@ -1,4 +1,5 @@
-// The boxer's measurements (report metrics: observe only) and its state machine's update after each step.
+// The boxer's measurements after each step (report metrics: observe only; the fall detection that control reads is
+// detect_fall, game/fall_detection.cpp).
 #include <algorithm>
 #include <cmath>
 
@@ -34,17 +35,13 @@ void measure_legs_overlap(const eng::physics::Model& m, const eng::physics::Data
     }
 }
 
-}  // namespace
-
-void boxer_measure(const eng::physics::Model& m, const eng::physics::Data& d, const eng::assets::CharacterDesc& desc,
-                   Boxer& b, double dt) {
+// The tracking error in world orientation against the desired pose lifted with the desired root, per bone: summed
+// over every sample, and over the samples before the first fall.
+void measure_tracking(const eng::physics::Data& d, const eng::assets::CharacterDesc& desc, Boxer& b) {
   BoxerMetrics& mt = b.metrics;
   const auto& skel = desc.skeleton;
   const int n = skel.size();
-  const int pelvis = b.bodies.body[0];
-  const double support = std::min(b.stance.lead_top, b.stance.rear_top);
   if (mt.err_sq_sum.empty()) mt.err_sq_sum.assign(n, 0.0);
-  // Tracking error in world orientation, against the desired pose lifted with the desired root.
   eng::control::lift_to_world(skel, b.desired.pose, b.desired.pose.rotation[0], b.scratch.W_d_metric);
   if (mt.err_sq_upright.empty()) mt.err_sq_upright.assign(n, 0.0);
   for (int i = 0; i < n; ++i) {
@@ -55,27 +52,35 @@ void boxer_measure(const eng::physics::Model& m, const eng::physics::Data& d, co
   }
   ++mt.samples;
   if (!mt.fell) ++mt.samples_upright;
+}
 
+// The root assist's torque (upright) and the upper arms' error from the servo's pose (BoxerMetrics::arm_*).
+void measure_root_and_arms(const eng::physics::Data& d, const eng::assets::CharacterDesc& desc, Boxer& b, double dt) {
+  BoxerMetrics& mt = b.metrics;
   if (!mt.fell) {
     const double t = b.ctl.root_torque.norm();
     mt.root_torque_sq_dt += t * t * dt;
     mt.root_torque_peak = std::max(mt.root_torque_peak, t);
     if (b.settings.root_params.enabled && t >= 0.999 * b.settings.root_params.max_torque) mt.root_saturated_time += dt;
   }
-  if (!b.limp) {  // (a limp body has no servo pose)
-    if (mt.upper_arm[0] < 0)
-      for (int k = 0; k < 2; ++k) mt.upper_arm[k] = skel.find(k == 0 ? "upper_arm_l" : "upper_arm_r");
-    double worst = 0.0;
-    for (int k = 0; k < 2; ++k) {
-      const int i = mt.upper_arm[k];
-      if (i < 0 || size_t(i) >= b.ctl.servo.W_d.size()) continue;
-      const Eigen::Quaterniond Wa(d.x[b.bodies.body[i]].R);
-      worst = std::max(worst, eng::control::orientation_error(b.ctl.servo.W_d[i], Wa).norm());
-    }
-    mt.arm_error_end = worst;
-    if (b.ctl.state.state == BoxerState::Guard && worst > BoxerMetrics::kArmOffPose) mt.arm_off_guard_s += dt;
+  if (b.limp) return;  // (a limp body has no servo pose)
+  if (mt.upper_arm[0] < 0)
+    for (int k = 0; k < 2; ++k) mt.upper_arm[k] = desc.skeleton.find(k == 0 ? "upper_arm_l" : "upper_arm_r");
+  double worst = 0.0;
+  for (int k = 0; k < 2; ++k) {
+    const int i = mt.upper_arm[k];
+    if (i < 0 || size_t(i) >= b.ctl.servo.W_d.size()) continue;
+    const Eigen::Quaterniond Wa(d.x[b.bodies.body[i]].R);
+    worst = std::max(worst, eng::control::orientation_error(b.ctl.servo.W_d[i], Wa).norm());
   }
-  for (int k = 0; k < 2; ++k) {  // the planted feet's slide (BoxerMetrics::foot_slide)
+  mt.arm_error_end = worst;
+  if (b.ctl.state.state == BoxerState::Guard && worst > BoxerMetrics::kArmOffPose) mt.arm_off_guard_s += dt;
+}
+
+// The planted feet's slide (BoxerMetrics::foot_slide), and how much of its travel a clip's step covered once planted.
+void measure_foot_slide(const eng::physics::Data& d, Boxer& b) {
+  BoxerMetrics& mt = b.metrics;
+  for (int k = 0; k < 2; ++k) {
     const int fb = b.bodies.body[b.bones.foot[k]];
     const Eigen::Vector2d sole = (d.x[fb].p + d.x[fb].R * b.settings.tuning.foot.centre).head<2>();
     const eng::control::BalanceStep& step = b.ctl.balance_steps.step;
@@ -95,71 +100,76 @@ void boxer_measure(const eng::physics::Model& m, const eng::physics::Data& d, co
     if (down) mt.foot_slide[k] = mt.foot_slide_closed[k] + (sole - mt.foot_anchor[k]).norm();
     mt.foot_was_down[k] = down;
   }
+}
+
+// The diagnostic trace (BoxerMetrics::trace): every 0.05 s for the first 4 s, and once at the first fall.
+void trace_diagnostics(const eng::physics::Data& d, const eng::assets::CharacterDesc& desc, Boxer& b,
+                       const Eigen::Vector3d& com, double dt) {
+  BoxerMetrics& mt = b.metrics;
+  const int pelvis = b.bodies.body[0];
+  const double support = std::min(b.stance.lead_top, b.stance.rear_top);
+  const int* feet = b.bones.foot;
+  if (mt.samples == 1)
+    for (int k = 0; k < 2; ++k) mt.foot0[k] = d.x[b.bodies.body[feet[k]]].p;
+  const long every = std::lround(0.05 / dt);
+  const bool fall_now = mt.fell && !mt.traced_fall;
+  if ((d.time < 4.0 && mt.samples % every == 0) || fall_now) {
+    if (fall_now) mt.traced_fall = true;
+    std::vector<Eigen::Quaterniond> Wd;
+    std::vector<Eigen::Vector3d> Pd;
+    pose_fk(desc.skeleton, b.desired.pose, Wd, Pd);
+    std::array<double, 12> r{};
+    r[0] = d.time;
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+    double fz = 0;
+    Eigen::Vector3d cop = Eigen::Vector3d::Zero();
+    for (int k = 0; k < 2; ++k) {
+      const int fb = b.bodies.body[feet[k]];
+      const Eigen::Matrix3d R = d.x[fb].R;
+      const Eigen::Vector3d fa = R.col(0), fd = Wd[feet[k]] * Eigen::Vector3d::UnitX();
+      r[1 + k] = std::remainder(std::atan2(fa.y(), fa.x()) - std::atan2(fd.y(), fd.x()), 2 * M_PI) * 180 / M_PI;
+      r[3 + k] = std::acos(std::clamp((R * Eigen::Vector3d::UnitZ()).z(), -1.0, 1.0)) * 180 / M_PI;
+      // rear (right) foot: sole normal's lean forward / left (heading frame, deg) in the slip columns
+      const Eigen::Vector2d up = Eigen::Rotation2Dd(-b.stance.heading) * (R * Eigen::Vector3d::UnitZ()).head<2>();
+      if (k == 1) r[5] = std::asin(std::clamp(up.x(), -1.0, 1.0)) * 180 / M_PI, r[6] = std::asin(std::clamp(up.y(), -1.0, 1.0)) * 180 / M_PI;
+      centre += 0.5 * (d.x[fb].p + R * Eigen::Vector3d(0.05, 0, 0));
+      for (const auto& c : d.contacts) {
+        const double f = c.body_b == fb ? c.force.z() : (c.body_a == fb ? -c.force.z() : 0.0);
+        if (f == 0.0) continue;
+        cop += f * c.point.position;
+        fz += f;
+      }
+    }
+    const Eigen::Rotation2Dd toh(-b.stance.heading);
+    const Eigen::Vector2d ce = toh * (com - centre).head<2>();
+    r[7] = ce.x(), r[8] = ce.y();
+    if (fz > 1e-6) {
+      const Eigen::Vector2d cp = toh * (cop / fz - centre).head<2>();
+      r[9] = cp.x(), r[10] = cp.y();
+    }
+    r[11] = d.x[pelvis].p.z() - support;
+    mt.trace.push_back(r);
+  }
+}
+
+}  // namespace
+
+void boxer_measure(const eng::physics::Model& m, const eng::physics::Data& d, const eng::assets::CharacterDesc& desc,
+                   Boxer& b, double dt) {
+  BoxerMetrics& mt = b.metrics;
+  const int pelvis = b.bodies.body[0];
+  measure_tracking(d, desc, b);
+  measure_root_and_arms(d, desc, b, dt);
+  measure_foot_slide(d, b);
   // The com's velocity from the body's momentum, not differenced positions: the match's referee sets a boxer on its
-  // mark (back_to_marks), and the jump read as 529 m/s (match seed 17).
+  // mark (back_to_marks), and differenced, that jump reads as hundreds of m/s.
   const Eigen::Vector3d com = eng::physics::subtree_com(m, d, pelvis);
   const Eigen::Vector3d vcom = eng::physics::spatial_momentum(m, d, pelvis).tail<3>() / b.control_body.total_mass;
   mt.max_com_speed = std::max(mt.max_com_speed, vcom.norm());
   // On its feet (guard or stunned: a match boxer after a get-up too; not falling, down or in the stand-up's kneel).
   const BoxerState state = b.ctl.state.state;
   if (!b.limp && (state == BoxerState::Guard || state == BoxerState::Stunned)) measure_legs_overlap(m, d, b, dt);
-
-
-  {  // diagnostic trace
-    const int* feet = b.bones.foot;
-    if (mt.samples == 1)
-      for (int k = 0; k < 2; ++k) mt.foot0[k] = d.x[b.bodies.body[feet[k]]].p;
-    const long every = std::lround(0.05 / dt);
-    const bool fall_now = mt.fell && !mt.traced_fall;
-    if ((d.time < 4.0 && mt.samples % every == 0) || fall_now) {
-      if (fall_now) mt.traced_fall = true;
-      std::vector<Eigen::Quaterniond> Wd;
-      std::vector<Eigen::Vector3d> Pd;
-      pose_fk(skel, b.desired.pose, Wd, Pd);
-      std::array<double, 12> r{};
-      r[0] = d.time;
-      Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-      double fz = 0;
-      Eigen::Vector3d cop = Eigen::Vector3d::Zero();
-      for (int k = 0; k < 2; ++k) {
-        const int fb = b.bodies.body[feet[k]];
-        const Eigen::Matrix3d R = d.x[fb].R;
-        const Eigen::Vector3d fa = R.col(0), fd = Wd[feet[k]] * Eigen::Vector3d::UnitX();
-        r[1 + k] = std::remainder(std::atan2(fa.y(), fa.x()) - std::atan2(fd.y(), fd.x()), 2 * M_PI) * 180 / M_PI;
-        r[3 + k] = std::acos(std::clamp((R * Eigen::Vector3d::UnitZ()).z(), -1.0, 1.0)) * 180 / M_PI;
-        // rear (right) foot: sole normal's lean forward / left (heading frame, deg) in the slip columns
-        const Eigen::Vector2d up = Eigen::Rotation2Dd(-b.stance.heading) * (R * Eigen::Vector3d::UnitZ()).head<2>();
-        if (k == 1) r[5] = std::asin(std::clamp(up.x(), -1.0, 1.0)) * 180 / M_PI, r[6] = std::asin(std::clamp(up.y(), -1.0, 1.0)) * 180 / M_PI;
-        centre += 0.5 * (d.x[fb].p + R * Eigen::Vector3d(0.05, 0, 0));
-        for (const auto& c : d.contacts) {
-          const double f = c.body_b == fb ? c.force.z() : (c.body_a == fb ? -c.force.z() : 0.0);
-          if (f == 0.0) continue;
-          cop += f * c.point.position;
-          fz += f;
-        }
-      }
-      const Eigen::Rotation2Dd toh(-b.stance.heading);
-      const Eigen::Vector2d ce = toh * (com - centre).head<2>();
-      r[7] = ce.x(), r[8] = ce.y();
-      if (fz > 1e-6) {
-        const Eigen::Vector2d cp = toh * (cop / fz - centre).head<2>();
-        r[9] = cp.x(), r[10] = cp.y();
-      }
-      r[11] = d.x[pelvis].p.z() - support;
-      mt.trace.push_back(r);
-    }
-  }
-  // The state machine (a fall: pelvis below half its standing height above the support, or a link other than feet
-  // and shanks on the crates or floor for more than 0.2 s), then the metrics record what it decided.
-  const bool went_down = boxer_state_update(b.ctl.state, b.settings.tuning.fall, d.x[pelvis].p.z() - support,
-                                            b.ctl.contacts.other_link_on_ground, d.time, dt);
-  if (went_down && !mt.fell) {  // the first fall (a match boxer may go down again after getting up)
-    mt.fell = true;
-    mt.fell_reason = b.ctl.state.reason;
-    mt.fell_at = d.time, mt.fell_pelvis = d.x[pelvis].p;
-  } else if (!mt.fell) {
-    mt.time_upright += dt;
-  }
+  trace_diagnostics(d, desc, b, com, dt);
 }
 
 }  // namespace boxing

@@ -16,9 +16,8 @@ namespace boxing {
 // The home clip of every boxing walk.
 inline constexpr const char* kGuardClip = "guard";
 
-// A boxing walk's heading hold (GraphWalker::heading_hold, 1/s: a 5 s time constant). Measured on the 600 s graph
-// walks, seeds 1-24, with the feet's limits in the plan (docs/decisions/foot-slide.md): 24 of 24 stand (without it 23),
-// the rear foot's slide median 0.27 m (0.41), max 0.73 m (0.96).
+// A boxing walk's heading hold (GraphWalker::heading_hold, 1/s: a 5 s time constant): holding the walk's heading keeps
+// the rear foot's slide down on long graph walks (docs/decisions/foot-slide.md).
 inline constexpr double kHeadingHold = 0.2;
 
 // The boxer's leg bones as content/boxer/boxer.gltf names them ([0] left, the orthodox lead; [1] right).

@@ -363,6 +363,7 @@ void step_world(World& w) {
   for (Boxer& b : w.boxers) boxer_sense_contacts(w.data, b);
   for (Boxer& b : w.boxers) observe_push(w.model, w.data, b, kPhysicsDt);
   for (Boxer& b : w.boxers) boxer_measure(w.model, w.data, w.boxer_desc, b, kPhysicsDt);
+  for (Boxer& b : w.boxers) detect_fall(w.data, b, kPhysicsDt);
   interaction_after_step(w);  // (the scenario's after_step reads this step's object hits)
   health_after_step(w);
   if (scenario.after_step) scenario.after_step(w);

@@ -172,6 +172,92 @@ eng::Result<std::vector<Clip>> load_clips(const std::string& path, const Skeleto
   return load_clips(*scene, sk);
 }
 
+namespace {
+
+// A clip's metadata from its animation's extras (tags, loop, glove, impact, next): an error message, or empty.
+std::string read_clip_metadata(const eng::assets::GltfAnimation& a, const Skeleton& sk, Clip& c) {
+  c.name = a.name;
+  const auto& ex = a.extras;
+  if (!ex.is_object() || !ex.contains("tags") || !ex["tags"].is_array() || !ex.contains("loop") ||
+      !ex["loop"].is_boolean())
+    return "missing metadata: extras.tags (array) and extras.loop (bool) are required";
+  for (const auto& t : ex["tags"]) {
+    if (!t.is_string()) return "extras.tags must hold strings";
+    c.tags.push_back(t.get<std::string>());
+  }
+  c.loop = ex["loop"].get<bool>();
+  if (ex.contains("glove") && ex["glove"].is_string()) {
+    c.glove = sk.find(ex["glove"].get<std::string>());
+    if (c.glove < 0) return "extras.glove '" + ex["glove"].get<std::string>() + "' is not a bone";
+  }
+  if (ex.contains("impact") && ex["impact"].is_number()) c.impact_time = ex["impact"].get<double>();
+  if (ex.contains("next") && ex["next"].is_array())
+    for (const auto& t : ex["next"])
+      if (t.is_string()) c.next.push_back(t.get<std::string>());
+  if ((c.glove >= 0) != (c.impact_time >= 0)) return "missing metadata: a strike needs both extras.glove and extras.impact";
+  return {};
+}
+
+// The key times: those of the root translation channel (every channel must share them): an error message, or empty.
+std::string read_key_times(const eng::assets::GltfScene& sc, const eng::assets::GltfAnimation& a, const Skeleton& sk,
+                           Clip& c, const eng::assets::GltfChannel*& root_ch) {
+  root_ch = nullptr;
+  for (const auto& ch : a.channels) {
+    if (ch.node < 0 || ch.node >= static_cast<int>(sc.nodes.size())) return "channel targets a missing node";
+    const std::string& nn = sc.nodes[ch.node].name;
+    const int bone = sk.find(nn);
+    if (bone < 0) return "channel on node '" + nn + "', which is not a skeleton bone";
+    if (bone == 0 && ch.path == "translation") root_ch = &ch;
+  }
+  if (!root_ch) return "no translation channel on the root bone '" + sk.name[0] + "'";
+  for (double t : root_ch->times) c.key_times.push_back(t);
+  const size_t nk = c.key_times.size();
+  if (nk < 2) return "needs at least two keys";
+  for (size_t k = 1; k < nk; ++k)
+    if (!(c.key_times[k] > c.key_times[k - 1])) return "key times must increase";
+  if (std::abs(c.key_times[0]) > 1e-6) return "first key must be at time 0";
+  c.key_times[0] = 0.0;
+  return {};
+}
+
+// The keys' poses from the rotation channels and the root's translation, each rotation in the previous key's
+// hemisphere: an error message, or empty.
+std::string read_keys(const eng::assets::GltfScene& sc, const eng::assets::GltfAnimation& a, const Skeleton& sk,
+                      const eng::assets::GltfChannel& root_ch, Clip& c) {
+  const size_t nk = c.key_times.size();
+  Pose rest;
+  rest.rotation.assign(sk.size(), Eigen::Quaterniond::Identity());
+  c.keys.assign(nk, rest);
+  for (const auto& ch : a.channels) {
+    const int bone = sk.find(sc.nodes[ch.node].name);
+    if (ch.times.size() != nk) return "channel key times differ from the root's";
+    for (size_t k = 0; k < nk; ++k)
+      if (std::abs(ch.times[k] - root_ch.times[k]) > 1e-6) return "channel key times differ from the root's";
+    if (ch.interpolation == "CUBICSPLINE") return "CUBICSPLINE channels are not supported";
+    if (ch.path == "rotation") {
+      if (ch.values.size() != 4 * nk) return "rotation channel has the wrong value count";
+      for (size_t k = 0; k < nk; ++k) {
+        Eigen::Quaterniond q(ch.values[4 * k + 3], ch.values[4 * k], ch.values[4 * k + 1], ch.values[4 * k + 2]);
+        if (q.norm() < 1e-6) return "zero quaternion";
+        c.keys[k].rotation[bone] = q.normalized();
+      }
+    } else if (ch.path == "translation") {
+      if (bone != 0) continue;  // bone offsets are fixed; only the root translates
+      if (ch.values.size() != 3 * nk) return "translation channel has the wrong value count";
+      for (size_t k = 0; k < nk; ++k)
+        c.keys[k].root_position = Eigen::Vector3d(ch.values[3 * k], ch.values[3 * k + 1], ch.values[3 * k + 2]);
+    }
+  }
+  // hemisphere continuity
+  for (int b = 0; b < sk.size(); ++b)
+    for (size_t k = 1; k < nk; ++k)
+      if (c.keys[k].rotation[b].dot(c.keys[k - 1].rotation[b]) < 0)
+        c.keys[k].rotation[b].coeffs() = -c.keys[k].rotation[b].coeffs();
+  return {};
+}
+
+}  // namespace
+
 eng::Result<std::vector<Clip>> load_clips(const eng::assets::GltfScene& sc, const Skeleton& sk) {
   const std::string& path = sc.path;
   auto fail = [&](const std::string& anim, const std::string& msg) {
@@ -181,74 +267,11 @@ eng::Result<std::vector<Clip>> load_clips(const eng::assets::GltfScene& sc, cons
   std::vector<Clip> out;
   for (const auto& a : sc.animations) {
     Clip c;
-    c.name = a.name;
-    const auto& ex = a.extras;
-    if (!ex.is_object() || !ex.contains("tags") || !ex["tags"].is_array() || !ex.contains("loop") ||
-        !ex["loop"].is_boolean())
-      return fail(a.name, "missing metadata: extras.tags (array) and extras.loop (bool) are required");
-    for (const auto& t : ex["tags"]) {
-      if (!t.is_string()) return fail(a.name, "extras.tags must hold strings");
-      c.tags.push_back(t.get<std::string>());
-    }
-    c.loop = ex["loop"].get<bool>();
-    if (ex.contains("glove") && ex["glove"].is_string()) {
-      c.glove = sk.find(ex["glove"].get<std::string>());
-      if (c.glove < 0) return fail(a.name, "extras.glove '" + ex["glove"].get<std::string>() + "' is not a bone");
-    }
-    if (ex.contains("impact") && ex["impact"].is_number()) c.impact_time = ex["impact"].get<double>();
-    if (ex.contains("next") && ex["next"].is_array())
-      for (const auto& t : ex["next"])
-        if (t.is_string()) c.next.push_back(t.get<std::string>());
-    if ((c.glove >= 0) != (c.impact_time >= 0))
-      return fail(a.name, "missing metadata: a strike needs both extras.glove and extras.impact");
-
-    // key times: those of the root translation channel; every channel must share them
+    std::string error = read_clip_metadata(a, sk, c);
     const eng::assets::GltfChannel* root_ch = nullptr;
-    for (const auto& ch : a.channels) {
-      if (ch.node < 0 || ch.node >= static_cast<int>(sc.nodes.size()))
-        return fail(a.name, "channel targets a missing node");
-      const std::string& nn = sc.nodes[ch.node].name;
-      const int bone = sk.find(nn);
-      if (bone < 0) return fail(a.name, "channel on node '" + nn + "', which is not a skeleton bone");
-      if (bone == 0 && ch.path == "translation") root_ch = &ch;
-    }
-    if (!root_ch) return fail(a.name, "no translation channel on the root bone '" + sk.name[0] + "'");
-    for (double t : root_ch->times) c.key_times.push_back(t);
-    const size_t nk = c.key_times.size();
-    if (nk < 2) return fail(a.name, "needs at least two keys");
-    for (size_t k = 1; k < nk; ++k)
-      if (!(c.key_times[k] > c.key_times[k - 1])) return fail(a.name, "key times must increase");
-    if (std::abs(c.key_times[0]) > 1e-6) return fail(a.name, "first key must be at time 0");
-    c.key_times[0] = 0.0;
-    Pose rest;
-    rest.rotation.assign(sk.size(), Eigen::Quaterniond::Identity());
-    c.keys.assign(nk, rest);
-    for (const auto& ch : a.channels) {
-      const int bone = sk.find(sc.nodes[ch.node].name);
-      if (ch.times.size() != nk) return fail(a.name, "channel key times differ from the root's");
-      for (size_t k = 0; k < nk; ++k)
-        if (std::abs(ch.times[k] - root_ch->times[k]) > 1e-6)
-          return fail(a.name, "channel key times differ from the root's");
-      if (ch.interpolation == "CUBICSPLINE") return fail(a.name, "CUBICSPLINE channels are not supported");
-      if (ch.path == "rotation") {
-        if (ch.values.size() != 4 * nk) return fail(a.name, "rotation channel has the wrong value count");
-        for (size_t k = 0; k < nk; ++k) {
-          Eigen::Quaterniond q(ch.values[4 * k + 3], ch.values[4 * k], ch.values[4 * k + 1], ch.values[4 * k + 2]);
-          if (q.norm() < 1e-6) return fail(a.name, "zero quaternion");
-          c.keys[k].rotation[bone] = q.normalized();
-        }
-      } else if (ch.path == "translation") {
-        if (bone != 0) continue;  // bone offsets are fixed; only the root translates
-        if (ch.values.size() != 3 * nk) return fail(a.name, "translation channel has the wrong value count");
-        for (size_t k = 0; k < nk; ++k)
-          c.keys[k].root_position = Eigen::Vector3d(ch.values[3 * k], ch.values[3 * k + 1], ch.values[3 * k + 2]);
-      }
-    }
-    // hemisphere continuity
-    for (int b = 0; b < sk.size(); ++b)
-      for (size_t k = 1; k < nk; ++k)
-        if (c.keys[k].rotation[b].dot(c.keys[k - 1].rotation[b]) < 0)
-          c.keys[k].rotation[b].coeffs() = -c.keys[k].rotation[b].coeffs();
+    if (error.empty()) error = read_key_times(sc, a, sk, c, root_ch);
+    if (error.empty()) error = read_keys(sc, a, sk, *root_ch, c);
+    if (!error.empty()) return fail(a.name, error);
     if (c.impact_time >= 0 && !(c.impact_time > 0 && c.impact_time < c.duration()))
       return fail(a.name, "impact time outside the clip");
     out.push_back(std::move(c));

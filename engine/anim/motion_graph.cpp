@@ -108,126 +108,146 @@ std::vector<Vector3d> MotionGraph::point_cloud(const Pose& p) const {
   return pts;
 }
 
-void MotionGraph::build(const std::vector<Clip>& cl, const GraphOptions& opt, const MotionGraphOptions& co,
-                        const Skeleton& sk) {
-  clips = cl;
-  options = opt;
-  content = co;
-  skeleton = sk;
-  nodes.clear();
-  edges.clear();
-  first_node.clear();
-  frame_count.clear();
-  const int C = static_cast<int>(clips.size());
-  const int k = std::max(1, options.window);
-  // frames and point clouds
-  std::vector<std::vector<std::vector<Vector3d>>> cloud(C);
+namespace {
+
+// Per clip, per frame: the frame's point cloud (clip space).
+using FrameClouds = std::vector<std::vector<std::vector<Vector3d>>>;
+
+// One node per frame (the clip sampled at options.fps), its point cloud, and the Next edges along each clip.
+FrameClouds add_frames(MotionGraph& g) {
+  const int C = static_cast<int>(g.clips.size());
+  FrameClouds cloud(C);
   for (int c = 0; c < C; ++c) {
-    const int n = static_cast<int>(std::floor(clips[c].duration() * options.fps + 1e-9)) + 1;
-    first_node.push_back(static_cast<int>(nodes.size()));
-    frame_count.push_back(n);
+    const int n = static_cast<int>(std::floor(g.clips[c].duration() * g.options.fps + 1e-9)) + 1;
+    g.first_node.push_back(static_cast<int>(g.nodes.size()));
+    g.frame_count.push_back(n);
     for (int f = 0; f < n; ++f) {
-      nodes.push_back({c, f});
-      cloud[c].push_back(point_cloud(sample_clip_pose(clips[c], f / options.fps)));
+      g.nodes.push_back({c, f});
+      cloud[c].push_back(g.point_cloud(sample_clip_pose(g.clips[c], f / g.options.fps)));
     }
   }
-  edges.assign(nodes.size(), {});
+  g.edges.assign(g.nodes.size(), {});
   for (int c = 0; c < C; ++c)
-    for (int f = 0; f + 1 < frame_count[c]; ++f) {
+    for (int f = 0; f + 1 < g.frame_count[c]; ++f) {
       GraphEdge e;
-      e.to = node(c, f + 1);
+      e.to = g.node(c, f + 1);
       e.kind = EdgeKind::Next;
-      edges[node(c, f)].push_back(e);
+      g.edges[g.node(c, f)].push_back(e);
     }
+  return cloud;
+}
 
-  // window distances and candidate transitions
+// The window distances from clip a's windows (rows, na) to clip b's (columns, nb): D the squared distance after the
+// 2D alignment AL of b's window onto a's (Kovar et al. 2002), each pair's per-point RMS added to sum_rms.
+void window_distances(const MotionGraph& g, const FrameClouds& cloud, int a, int b, int k, int P, int na, int nb,
+                      std::vector<double>& D, std::vector<Align2D>& AL, double& sum_rms) {
+  std::vector<Vector3d> wa, wb;
+  for (int i = 0; i < na; ++i)
+    for (int j = 0; j < nb; ++j) {
+      wa.clear();
+      wb.clear();
+      for (int q = 0; q < k; ++q) {
+        wa.insert(wa.end(), cloud[a][i + q].begin(), cloud[a][i + q].end());
+        wb.insert(wb.end(), cloud[b][j + q].begin(), cloud[b][j + q].end());
+      }
+      const Align2D T = align_2d(wa, wb);
+      double d = 0;
+      for (size_t m = 0; m < wa.size(); ++m) d += (wa[m] - T.apply(wb[m])).squaredNorm();
+      D[i * nb + j] = d;
+      AL[i * nb + j] = T;
+      sum_rms += std::sqrt(d / (k * P));
+    }
+}
+
+// A Transition edge from a's window i to b's window j for every pair under threshold_rms that is a local minimum of
+// the distance among its 8 neighbours (not within min_self_gap_windows of itself in the same clip).
+void add_local_minima(MotionGraph& g, int a, int b, int k, int P, int na, int nb, const std::vector<double>& D,
+                      const std::vector<Align2D>& AL) {
+  for (int i = 0; i < na; ++i)
+    for (int j = 0; j < nb; ++j) {
+      if (a == b && std::abs(i - j) < g.options.min_self_gap_windows * k) continue;
+      const double d = D[i * nb + j];
+      const double rms = std::sqrt(d / (k * P));
+      if (rms >= g.options.threshold_rms) continue;
+      bool local_min = true;
+      for (int di = -1; di <= 1 && local_min; ++di)
+        for (int dj = -1; dj <= 1; ++dj) {
+          const int ii = i + di, jj = j + dj;
+          if ((di || dj) && ii >= 0 && jj >= 0 && ii < na && jj < nb && D[ii * nb + jj] < d) {
+            local_min = false;
+            break;
+          }
+        }
+      if (!local_min) continue;
+      GraphEdge e;
+      e.to = g.node(b, j + k - 1);
+      e.kind = EdgeKind::Transition;
+      e.blend = (k - 1) / g.options.fps;
+      e.dst_start_frame = j;
+      e.align = AL[i * nb + j];
+      e.rms = rms;
+      g.edges[g.node(a, i)].push_back(e);
+      ++g.transitions_before_prune;
+    }
+}
+
+// Window distances and candidate transitions between every pair of clips a random transition may leave and enter.
+void add_transitions(MotionGraph& g, const FrameClouds& cloud, int k) {
+  const int C = static_cast<int>(g.clips.size());
   const int P = cloud.empty() || cloud[0].empty() ? 1 : static_cast<int>(cloud[0][0].size());
   double sum_rms = 0.0;
-  candidate_pairs = 0;
-  transitions_before_prune = 0;
-  std::vector<Vector3d> wa, wb;
+  g.candidate_pairs = 0;
+  g.transitions_before_prune = 0;
   for (int a = 0; a < C; ++a) {
-    if (has_any_tag(clips[a], content.no_source_tags)) continue;
+    if (has_any_tag(g.clips[a], g.content.no_source_tags)) continue;
     for (int b = 0; b < C; ++b) {
-      if (has_any_tag(clips[b], content.entry_only_tags)) continue;
-      const int na = frame_count[a] - k + 1, nb = frame_count[b] - k + 1;
+      if (has_any_tag(g.clips[b], g.content.entry_only_tags)) continue;
+      const int na = g.frame_count[a] - k + 1, nb = g.frame_count[b] - k + 1;
       if (na <= 0 || nb <= 0) continue;
       std::vector<double> D(static_cast<size_t>(na) * nb);
       std::vector<Align2D> AL(D.size());
-      for (int i = 0; i < na; ++i)
-        for (int j = 0; j < nb; ++j) {
-          wa.clear();
-          wb.clear();
-          for (int q = 0; q < k; ++q) {
-            wa.insert(wa.end(), cloud[a][i + q].begin(), cloud[a][i + q].end());
-            wb.insert(wb.end(), cloud[b][j + q].begin(), cloud[b][j + q].end());
-          }
-          const Align2D T = align_2d(wa, wb);
-          double d = 0;
-          for (size_t m = 0; m < wa.size(); ++m) d += (wa[m] - T.apply(wb[m])).squaredNorm();
-          D[i * nb + j] = d;
-          AL[i * nb + j] = T;
-          sum_rms += std::sqrt(d / (k * P));
-          ++candidate_pairs;
-        }
-      for (int i = 0; i < na; ++i)
-        for (int j = 0; j < nb; ++j) {
-          if (a == b && std::abs(i - j) < options.min_self_gap_windows * k) continue;
-          const double d = D[i * nb + j];
-          const double rms = std::sqrt(d / (k * P));
-          if (rms >= options.threshold_rms) continue;
-          bool local_min = true;
-          for (int di = -1; di <= 1 && local_min; ++di)
-            for (int dj = -1; dj <= 1; ++dj) {
-              const int ii = i + di, jj = j + dj;
-              if ((di || dj) && ii >= 0 && jj >= 0 && ii < na && jj < nb && D[ii * nb + jj] < d) {
-                local_min = false;
-                break;
-              }
-            }
-          if (!local_min) continue;
-          GraphEdge e;
-          e.to = node(b, j + k - 1);
-          e.kind = EdgeKind::Transition;
-          e.blend = (k - 1) / options.fps;
-          e.dst_start_frame = j;
-          e.align = AL[i * nb + j];
-          e.rms = rms;
-          edges[node(a, i)].push_back(e);
-          ++transitions_before_prune;
-        }
+      window_distances(g, cloud, a, b, k, P, na, nb, D, AL, sum_rms);
+      g.candidate_pairs += na * nb;
+      add_local_minima(g, a, b, k, P, na, nb, D, AL);
     }
   }
-  mean_rms = candidate_pairs ? sum_rms / candidate_pairs : 0.0;
+  g.mean_rms = g.candidate_pairs ? sum_rms / g.candidate_pairs : 0.0;
+}
 
-  // natural continuations and knockdown edges
-  const int home = clip_index(content.home_clip);
+// Natural continuations (a clip's last frame to the first of its next clips, or itself / the home clip) and the
+// knockdown edges (the home clip's first frame to each forced-entry clip's).
+void add_continuations(MotionGraph& g, const FrameClouds& cloud) {
+  const int C = static_cast<int>(g.clips.size());
+  const int home = g.clip_index(g.content.home_clip);
   for (int a = 0; a < C; ++a) {
-    std::vector<std::string> next = clips[a].next;
-    if (next.empty()) next.push_back(clips[a].loop || home < 0 ? clips[a].name : content.home_clip);
-    const int last = frame_count[a] - 1;
-    const Pose pa = sample_clip_pose(clips[a], clips[a].duration());
+    std::vector<std::string> next = g.clips[a].next;
+    if (next.empty()) next.push_back(g.clips[a].loop || home < 0 ? g.clips[a].name : g.content.home_clip);
+    const int last = g.frame_count[a] - 1;
+    const Pose pa = sample_clip_pose(g.clips[a], g.clips[a].duration());
     for (const auto& nn : next) {
-      const int b = clip_index(nn);
+      const int b = g.clip_index(nn);
       if (b < 0) continue;
       GraphEdge e;
-      e.to = node(b, 0);
+      e.to = g.node(b, 0);
       e.kind = EdgeKind::Continuation;
-      e.align = align_2d(point_cloud(pa), cloud[b][0]);
-      edges[node(a, last)].push_back(e);
+      e.align = align_2d(g.point_cloud(pa), cloud[b][0]);
+      g.edges[g.node(a, last)].push_back(e);
     }
-    if (has_any_tag(clips[a], content.forced_entry_tags) && home >= 0) {
+    if (has_any_tag(g.clips[a], g.content.forced_entry_tags) && home >= 0) {
       GraphEdge e;
-      e.to = node(a, 0);
+      e.to = g.node(a, 0);
       e.kind = EdgeKind::Knockdown;
       e.align = align_2d(cloud[home][0], cloud[a][0]);
-      edges[node(home, 0)].push_back(e);
+      g.edges[g.node(home, 0)].push_back(e);
     }
   }
+}
 
-  // largest strongly connected component: iterative Tarjan
-  const int N = static_cast<int>(nodes.size());
-  std::vector<int> index(N, -1), low(N, 0), comp(N, -1), stack;
+// The strongly connected components of the edges (iterative Tarjan): comp[v] per node; returns their count.
+int strongly_connected_components(const std::vector<std::vector<GraphEdge>>& edges, std::vector<int>& comp) {
+  const int N = static_cast<int>(edges.size());
+  std::vector<int> index(N, -1), low(N, 0), stack;
+  comp.assign(N, -1);
   std::vector<char> on_stack(N, 0);
   std::vector<std::pair<int, size_t>> call;
   int counter = 0, ncomp = 0;
@@ -266,30 +286,61 @@ void MotionGraph::build(const std::vector<Clip>& cl, const GraphOptions& opt, co
       }
     }
   }
+  return ncomp;
+}
+
+// Only the largest strongly connected component stays alive (a walk can neither dead-end nor get stuck in a corner):
+// the other nodes lose their edges, and the edges into them go.
+void keep_largest_component(MotionGraph& g) {
+  std::vector<int> comp;
+  const int ncomp = strongly_connected_components(g.edges, comp);
+  const int N = static_cast<int>(g.nodes.size());
   std::vector<int> size(ncomp, 0);
   for (int v = 0; v < N; ++v) ++size[comp[v]];
   const int best = ncomp ? static_cast<int>(std::max_element(size.begin(), size.end()) - size.begin()) : -1;
-  alive.assign(N, 0);
-  for (int v = 0; v < N; ++v) alive[v] = comp[v] == best;
-  scc_size = best >= 0 ? size[best] : 0;
-  transitions = 0;
+  g.alive.assign(N, 0);
+  for (int v = 0; v < N; ++v) g.alive[v] = comp[v] == best;
+  g.scc_size = best >= 0 ? size[best] : 0;
+  g.transitions = 0;
   for (int v = 0; v < N; ++v) {
-    auto& es = edges[v];
-    if (!alive[v]) {
+    auto& es = g.edges[v];
+    if (!g.alive[v]) {
       es.clear();
       continue;
     }
-    es.erase(std::remove_if(es.begin(), es.end(), [&](const GraphEdge& e) { return !alive[e.to]; }), es.end());
-    for (const auto& e : es) transitions += e.kind == EdgeKind::Transition;
+    es.erase(std::remove_if(es.begin(), es.end(), [&](const GraphEdge& e) { return !g.alive[e.to]; }), es.end());
+    for (const auto& e : es) g.transitions += e.kind == EdgeKind::Transition;
   }
+}
+
+}  // namespace
+
+// Kovar et al. 2002: a node per frame, transitions where windows of k frames match (local minima of the aligned
+// point-cloud distance under the threshold), the clips' own continuations, then the largest strongly connected
+// component.
+void MotionGraph::build(const std::vector<Clip>& cl, const GraphOptions& opt, const MotionGraphOptions& co,
+                        const Skeleton& sk) {
+  clips = cl;
+  options = opt;
+  content = co;
+  skeleton = sk;
+  nodes.clear();
+  edges.clear();
+  first_node.clear();
+  frame_count.clear();
+  const int k = std::max(1, options.window);
+  const FrameClouds cloud = add_frames(*this);
+  add_transitions(*this, cloud, k);
+  add_continuations(*this, cloud);
+  keep_largest_component(*this);
 }
 
 // ------------------------------------------------------------------------------------------ walker
 GraphWalker::GraphWalker(const MotionGraph& g, uint64_t seed, const std::string& start_clip)
     : g_(&g), rng_(seed), home_(g.clip_index(g.content.home_clip)) {
   clip_ = std::max(0, g.clip_index(start_clip.empty() ? g.content.home_clip : start_clip));
-  // The plans' scratch at its full size now: the first request_clip came in a graph walk's measured stretch (walk seed
-  // 3, once its carried steps landed where planned) and its arrays' first growth was the step's only allocation. The
+  // The plans' scratch at its full size now: the first request_clip can come in a graph walk's measured stretch, where
+  // its arrays' first growth would be the step's only allocation. The
   // heap holds at most one entry per edge relaxed, plus the source.
   const size_t N = g.nodes.size();
   size_t E = 1;
@@ -336,14 +387,23 @@ void GraphWalker::take_edge(int from_node, const GraphEdge& e) {
 void GraphWalker::decide() {
   // Called whenever frame_ changes (and at clip ends). Takes at most one non-Next edge.
   const int v = current_node();
-  const auto& es = g_->edges[v];
   const bool at_end = frame_ == g_->frame_count[clip_] - 1 && time_ >= g_->clips[clip_].duration();
-  // A request is done once the walk is in its target: the walk goes on at random from there (kept, the target
-  // drew the walk back into the requested clip at every continuation: a requested punch thrown again and again).
+  // A request is done once the walk is in its target: the walk goes on at random from there (kept, the target would
+  // draw the walk back into the requested clip at every continuation: a requested punch thrown again and again).
   if (!repeat_ && !plan_target_.empty() && plan_target_[v]) {
     plan_target_.clear();
     plan_.clear();
   }
+  if (follow_plan(v, at_end)) return;
+  if (at_end) {
+    take_continuation(v);
+    return;
+  }
+  take_random_transition(v);
+}
+
+bool GraphWalker::follow_plan(int v, bool at_end) {
+  const auto& es = g_->edges[v];
   if (!plan_.empty()) {
     const GraphNode& pf = g_->nodes[plan_.front().from_node];
     if (pf.clip == clip_ && pf.frame < frame_) {  // went past it (should not happen): replan
@@ -351,65 +411,70 @@ void GraphWalker::decide() {
       if (!plan_target_.empty()) plan_to(plan_target_);
     }
   }
-  if (!plan_.empty()) {
-    const Step s = plan_.front();
-    const GraphEdge* held = nullptr;  // the plan's next edge, when the hold keeps the walk from taking it
-    if (s.from_node == v && hold_transitions) {
-      const GraphEdge& e = es[s.edge];
-      if (e.kind != EdgeKind::Continuation || g_->nodes[e.to].clip != home_) held = &e;
+  if (plan_.empty()) return false;
+  const Step s = plan_.front();
+  const GraphEdge* held = nullptr;  // the plan's next edge, when the hold keeps the walk from taking it
+  if (s.from_node == v && hold_transitions) {
+    const GraphEdge& e = es[s.edge];
+    if (e.kind != EdgeKind::Continuation || g_->nodes[e.to].clip != home_) held = &e;
+  }
+  if (held && !at_end) return true;  // the plan waits (made again once the walk is past it)
+  if (s.from_node == v && !held) {
+    const GraphEdge& e = es[s.edge];
+    if (e.kind == EdgeKind::Continuation ? at_end : !blend_.active) {
+      plan_.erase(plan_.begin());
+      take_edge(v, e);
+      return true;
     }
-    if (held && !at_end) return;  // the plan waits (made again once the walk is past it)
-    if (s.from_node == v && !held) {
-      const GraphEdge& e = es[s.edge];
-      if (e.kind == EdgeKind::Continuation ? at_end : !blend_.active) {
-        plan_.erase(plan_.begin());
-        take_edge(v, e);
-        return;
-      }
-      if (e.kind != EdgeKind::Continuation) {  // missed (blending): replan from the next frame
+    if (e.kind != EdgeKind::Continuation) {  // missed (blending): replan from the next frame
+      plan_.clear();
+      if (!plan_target_.empty()) plan_to(plan_target_);
+      return true;
+    }
+  }
+  return false;
+}
+
+void GraphWalker::take_continuation(int v) {
+  const auto& es = g_->edges[v];
+  // The continuations, split into those looping back to this clip and the others; one drawn (no lists built: the k-th
+  // edge of a kind is found by counting, the same draw as indexing a list of them).
+  int n_cont = 0, n_self = 0;
+  for (const GraphEdge& e : es)
+    if (e.kind == EdgeKind::Continuation) {
+      ++n_cont;
+      if (g_->nodes[e.to].clip == clip_) ++n_self;
+    }
+  if (n_cont == 0) return;  // cannot happen in a pruned graph
+  if (hold_transitions) {  // held: into the home clip when a continuation goes there
+    for (const GraphEdge& e : es)
+      if (e.kind == EdgeKind::Continuation && g_->nodes[e.to].clip == home_) {
         plan_.clear();
+        take_edge(v, e);
         if (!plan_target_.empty()) plan_to(plan_target_);
         return;
       }
-    }
   }
-  if (at_end) {
-    // The continuations, split into those looping back to this clip and the others; one drawn (no lists built:
-    // the k-th edge of a kind is found by counting, the same draw as indexing a list of them).
-    int n_cont = 0, n_self = 0;
-    for (const GraphEdge& e : es)
-      if (e.kind == EdgeKind::Continuation) {
-        ++n_cont;
-        if (g_->nodes[e.to].clip == clip_) ++n_self;
-      }
-    if (n_cont == 0) return;  // cannot happen in a pruned graph
-    if (hold_transitions) {  // held: into the home clip when a continuation goes there
-      for (const GraphEdge& e : es)
-        if (e.kind == EdgeKind::Continuation && g_->nodes[e.to].clip == home_) {
-          plan_.clear();
-          take_edge(v, e);
-          if (!plan_target_.empty()) plan_to(plan_target_);
-          return;
-        }
-    }
-    const int n_other = n_cont - n_self;
-    int pool = 0;  // 0: every continuation, 1: self, 2: other
-    if (n_self > 0 && n_other > 0) pool = uniform() < loop_probability ? 1 : 2;
-    const int size = pool == 0 ? n_cont : pool == 1 ? n_self : n_other;
-    const int k = static_cast<int>(std::min(static_cast<size_t>(size) - 1, static_cast<size_t>(uniform() * size)));
-    int pick = -1;
-    for (int i = 0, seen = 0; i < static_cast<int>(es.size()) && pick < 0; ++i) {
-      if (es[i].kind != EdgeKind::Continuation) continue;
-      const bool self = g_->nodes[es[i].to].clip == clip_;
-      if (pool == 1 && !self) continue;
-      if (pool == 2 && self) continue;
-      if (seen++ == k) pick = i;
-    }
-    plan_.clear();
-    take_edge(v, es[pick]);
-    if (!plan_target_.empty()) plan_to(plan_target_);
-    return;
+  const int n_other = n_cont - n_self;
+  int pool = 0;  // 0: every continuation, 1: self, 2: other
+  if (n_self > 0 && n_other > 0) pool = uniform() < loop_probability ? 1 : 2;
+  const int size = pool == 0 ? n_cont : pool == 1 ? n_self : n_other;
+  const int k = static_cast<int>(std::min(static_cast<size_t>(size) - 1, static_cast<size_t>(uniform() * size)));
+  int pick = -1;
+  for (int i = 0, seen = 0; i < static_cast<int>(es.size()) && pick < 0; ++i) {
+    if (es[i].kind != EdgeKind::Continuation) continue;
+    const bool self = g_->nodes[es[i].to].clip == clip_;
+    if (pool == 1 && !self) continue;
+    if (pool == 2 && self) continue;
+    if (seen++ == k) pick = i;
   }
+  plan_.clear();
+  take_edge(v, es[pick]);
+  if (!plan_target_.empty()) plan_to(plan_target_);
+}
+
+void GraphWalker::take_random_transition(int v) {
+  const auto& es = g_->edges[v];
   if (!plan_.empty() || blend_.active || hold_transitions) return;
   int n_tr = 0;
   for (const GraphEdge& e : es) n_tr += e.kind == EdgeKind::Transition;

@@ -197,6 +197,11 @@ class GraphWalker {
   double uniform();  // [0,1) from 53 bits of mt19937_64 (same on every standard library)
   void take_edge(int from_node, const GraphEdge& e);
   void decide();
+  // decide's stages: the plan's next edge (true: decided, decide returns), a continuation drawn at the clip's end, a
+  // random transition.
+  bool follow_plan(int v, bool at_end);
+  void take_continuation(int v);
+  void take_random_transition(int v);
   bool plan_to(const std::vector<char>& target);
   void world_pose_at(double dt_offset, Pose& out) const;
   void hold_heading(double dt);  // heading_hold's turn of the walk's frames, before the tick samples them

@@ -114,7 +114,7 @@ bool add_contact(const Model& m, Data& d, const ContactPoint& cp) {
   c.body_b = m.geoms[cp.geom_b].body;
   // warm start: match last step's contact by (geom_a, geom_b, feature). Both lists come in the same
   // deterministic (pair-sorted) order, so the scan resumes after the previous match and wraps around:
-  // O(1) per contact when the contact set is stable (a full scan from 0 was O(contacts^2) per step).
+  // O(1) per contact when the contact set is stable (a full scan from 0 would be O(contacts^2) per step).
   const int np = static_cast<int>(d.prev_contacts.size());
   for (int s = 0; s < np; ++s) {
     int k = d.warm_cursor + s;
@@ -163,24 +163,28 @@ void collide(const Model& m, Data& d) {
   }
 }
 
-void compute_constraints(const Model& m, Data& d) {
-  d.rows.clear();
-  const int nv = m.nv;
-  const SolverOptions& so = m.solver;
+namespace {
+
+// Appends constraint rows to d.rows, each with its run of sparse Jacobian entries (d.J_idx / d.J_val from nz on).
+struct RowWriter {
+  Data& d;
   int nz = 0;  // next free sparse entry
-  auto add_row = [&](ConstraintRow r, int count) {
+  void add_row(ConstraintRow r, int count) {
     r.nz_begin = nz;
     r.nz_count = count;
     nz += count;
     d.rows.push_back(r);
-  };
-  auto add_unit_row = [&](ConstraintRow r, int dof, double value) {
+  }
+  void add_unit_row(ConstraintRow r, int dof, double value) {
     d.J_idx[nz] = dof;
     d.J_val[nz] = value;
     add_row(r, 1);
-  };
-  if (nv == 0) return;
-  const bool warm = so.warm_start;
+  }
+};
+
+// Each contact's normal row and its two friction rows (warm-started from the contact's stored impulses).
+void add_contact_rows(const Model& m, Data& d, RowWriter& w) {
+  const bool warm = m.solver.warm_start;
   for (int ci = 0; ci < static_cast<int>(d.contacts.size()); ++ci) {
     Contact& c = d.contacts[ci];
     const Vec3& n = c.point.normal;
@@ -193,7 +197,7 @@ void compute_constraints(const Model& m, Data& d) {
     rn.C = -c.point.depth;
     rn.lambda = warm ? c.normal_impulse : 0.0;
     row_range(m, c.body_a, c.body_b, rn);
-    add_row(rn, contact_row(m, d, c.body_a, c.body_b, p, n, nz));
+    w.add_row(rn, contact_row(m, d, c.body_a, c.body_b, p, n, w.nz));
     const double mu = std::sqrt(m.geoms[c.point.geom_a].friction * m.geoms[c.point.geom_b].friction);
     const int first = static_cast<int>(d.rows.size());
     for (int k = 0; k < 2; ++k) {
@@ -206,10 +210,55 @@ void compute_constraints(const Model& m, Data& d) {
       rt.j_end = rn.j_end;
       const Vec3& t = k == 0 ? t1 : t2;
       rt.lambda = warm ? c.friction_impulse.dot(t) : 0.0;
-      add_row(rt, contact_row(m, d, c.body_a, c.body_b, p, t, nz));
+      w.add_row(rt, contact_row(m, d, c.body_a, c.body_b, p, t, w.nz));
     }
   }
-  // joint limits (RBDA-style unilateral constraints on joint coordinates)
+}
+
+// A ball joint's swing and twist limit rows, within `act` of the limit.
+void add_ball_limit_rows(const Model& m, Data& d, RowWriter& w, size_t i, double act) {
+  const Body& b = m.bodies[i];
+  const Quat qr = quat_from(d.q.data() + b.q_index).normalized();
+  const Mat3 R = qr.toRotationMatrix();
+  if (b.swing_limit > 0) {
+    // swing: angle between the body Z axis and the rest Z axis; d(theta)/dt = w_parent . nhat,
+    // nhat = (ez x z)/|ez x z|, and w_parent = R w_body.
+    const Vec3 z = R.col(2);
+    const Vec3 axis = Vec3::UnitZ().cross(z);
+    const double s = axis.norm();
+    const double theta = std::atan2(s, z.z());
+    const double C = b.swing_limit - theta;
+    if (C < act && s > 1e-9) {
+      ConstraintRow r;
+      r.kind = ConstraintRow::Limit;
+      r.C = C;
+      row_range(m, static_cast<int>(i), 0, r);
+      const Vec3 jb = -(R.transpose() * (axis / s));
+      for (int k = 0; k < 3; ++k) {
+        d.J_idx[w.nz + k] = b.v_index + k;
+        d.J_val[w.nz + k] = jb[k];
+      }
+      w.add_row(r, 3);
+    }
+  }
+  if (b.twist_limit > 0) {
+    // swing-twist decomposition q = swing * twist(about body Z); twist rate ~ w_body.z
+    double tw = 2.0 * std::atan2(qr.z(), qr.w());
+    if (tw > M_PI) tw -= 2.0 * M_PI;
+    if (tw < -M_PI) tw += 2.0 * M_PI;
+    const double C = b.twist_limit - std::abs(tw);
+    if (C < act) {
+      ConstraintRow r;
+      r.kind = ConstraintRow::Limit;
+      r.C = C;
+      row_range(m, static_cast<int>(i), 0, r);
+      w.add_unit_row(r, b.v_index + 2, tw >= 0 ? -1.0 : 1.0);
+    }
+  }
+}
+
+// Joint limits (RBDA-style unilateral constraints on joint coordinates).
+void add_limit_rows(const Model& m, Data& d, RowWriter& w) {
   const double act = 0.2;  // activation distance (rad) for speculative limit rows
   for (size_t i = 1; i < m.bodies.size(); ++i) {
     const Body& b = m.bodies[i];
@@ -223,47 +272,21 @@ void compute_constraints(const Model& m, Data& d) {
       r.kind = ConstraintRow::Limit;
       r.C = C;
       row_range(m, static_cast<int>(i), 0, r);
-      add_unit_row(r, b.v_index, use_lo ? 1.0 : -1.0);
+      w.add_unit_row(r, b.v_index, use_lo ? 1.0 : -1.0);
     } else if (b.joint == JointType::Ball && (b.swing_limit > 0 || b.twist_limit > 0)) {
-      const Quat qr = quat_from(d.q.data() + b.q_index).normalized();
-      const Mat3 R = qr.toRotationMatrix();
-      if (b.swing_limit > 0) {
-        // swing: angle between the body Z axis and the rest Z axis; d(theta)/dt = w_parent . nhat,
-        // nhat = (ez x z)/|ez x z|, and w_parent = R w_body.
-        const Vec3 z = R.col(2);
-        const Vec3 axis = Vec3::UnitZ().cross(z);
-        const double s = axis.norm();
-        const double theta = std::atan2(s, z.z());
-        const double C = b.swing_limit - theta;
-        if (C < act && s > 1e-9) {
-          ConstraintRow r;
-          r.kind = ConstraintRow::Limit;
-          r.C = C;
-          row_range(m, static_cast<int>(i), 0, r);
-          const Vec3 jb = -(R.transpose() * (axis / s));
-          for (int k = 0; k < 3; ++k) {
-            d.J_idx[nz + k] = b.v_index + k;
-            d.J_val[nz + k] = jb[k];
-          }
-          add_row(r, 3);
-        }
-      }
-      if (b.twist_limit > 0) {
-        // swing-twist decomposition q = swing * twist(about body Z); twist rate ~ w_body.z
-        double tw = 2.0 * std::atan2(qr.z(), qr.w());
-        if (tw > M_PI) tw -= 2.0 * M_PI;
-        if (tw < -M_PI) tw += 2.0 * M_PI;
-        const double C = b.twist_limit - std::abs(tw);
-        if (C < act) {
-          ConstraintRow r;
-          r.kind = ConstraintRow::Limit;
-          r.C = C;
-          row_range(m, static_cast<int>(i), 0, r);
-          add_unit_row(r, b.v_index + 2, tw >= 0 ? -1.0 : 1.0);
-        }
-      }
+      add_ball_limit_rows(m, d, w, i, act);
     }
   }
+}
+
+}  // namespace
+
+void compute_constraints(const Model& m, Data& d) {
+  d.rows.clear();
+  if (m.nv == 0) return;
+  RowWriter w{d};
+  add_contact_rows(m, d, w);
+  add_limit_rows(m, d, w);
 }
 
 void point_spring_constraints(const Model& m, Data& d) {
@@ -556,109 +579,136 @@ void warm_start(const Model& m, Data& d) {
   }
 }
 
+namespace {
+
+// One projected Gauss-Seidel update of a joint limit row (lambda >= 0), v updated by the change.
+inline void solve_limit_row(Data& d, ConstraintRow& row, double* v) {
+  const int* ji = d.J_idx.data() + row.nz_begin;
+  const double* jx = d.J_val.data() + row.nz_begin;
+  const double* W = d.MinvJT.data() + row.w_off;
+  const int nb = row.j_end - row.j_begin;
+  double* vb = v + row.j_begin;
+  const double jv = sparse_dot(ji, jx, row.nz_count, v);
+  const double dl = -row.inv_diag * row.mass_scale * (jv + row.bias) - row.impulse_scale * row.lambda;
+  const double nl = std::max(row.lambda + dl, 0.0);
+  if (nl != row.lambda) axpy_n(nl - row.lambda, W, vb, nb);  // inactive speculative rows: no pass
+  row.lambda = nl;
+}
+
+// Box2D v3 mouse joint as a 3-row block (rows r, r+1, r+2): lambda += -mass_scale K^+ (J v + bias) - impulse_scale
+// lambda, then |lambda| <= max_force dt (the accumulated impulse is clamped, as Box2D does).
+inline void solve_spring_block(const Model& m, Data& d, int r, double* v) {
+  ConstraintRow& row = d.rows[r];
+  const int* ji = d.J_idx.data() + row.nz_begin;
+  const double* jx = d.J_val.data() + row.nz_begin;
+  const double* W = d.MinvJT.data() + row.w_off;
+  const int nb = row.j_end - row.j_begin;
+  double* vb = v + row.j_begin;
+  const int si = row.contact;
+  ConstraintRow& r1 = d.rows[r + 1];
+  ConstraintRow& r2 = d.rows[r + 2];
+  const int cnt = row.nz_count;
+  const Vec3 jv(sparse_dot(ji, jx, cnt, v), sparse_dot(ji, d.J_val.data() + r1.nz_begin, cnt, v),
+                sparse_dot(ji, d.J_val.data() + r2.nz_begin, cnt, v));
+  const Vec3 l0(row.lambda, r1.lambda, r2.lambda);
+  const Vec3 rhs = jv + Vec3(row.bias, r1.bias, r2.bias);
+  Vec3 l = l0 - row.mass_scale * (d.spring_Kpinv[si] * rhs) - row.impulse_scale * l0;
+  const double lmax = d.point_springs[si].max_force * m.dt;
+  if (l.squaredNorm() > lmax * lmax) l *= lmax / l.norm();
+  const Vec3 dl = l - l0;
+  row.lambda = l[0];
+  r1.lambda = l[1];
+  r2.lambda = l[2];
+  const double* W1 = W + nb;
+  const double* W2 = W1 + nb;
+  for (int i = 0; i < nb; ++i) vb[i] += dl[0] * W[i] + dl[1] * W1[i] + dl[2] * W2[i];
+}
+
+// A contact's normal row r followed by its two friction rows: one fused pass for the three J.v products, the normal
+// update, the tangent updates corrected by the normal's effect (J_t . W_n, precomputed: exactly Gauss-Seidel order
+// n -> t) within the friction cone (or box), and one fused pass updating v.
+inline void solve_contact_block(Data& d, int r, bool cone, double* v) {
+  ConstraintRow& row = d.rows[r];
+  const int* ji = d.J_idx.data() + row.nz_begin;
+  const double* jx = d.J_val.data() + row.nz_begin;
+  const double* W = d.MinvJT.data() + row.w_off;
+  const int nb = row.j_end - row.j_begin;
+  double* vb = v + row.j_begin;
+  ConstraintRow& f1 = d.rows[r + 1];
+  ConstraintRow& f2 = d.rows[r + 2];
+  const double* jx1 = d.J_val.data() + f1.nz_begin;
+  const double* jx2 = d.J_val.data() + f2.nz_begin;
+  const int cnt = row.nz_count;
+  const double jn = sparse_dot(ji, jx, cnt, v);
+  const double dl = -row.inv_diag * row.mass_scale * (jn + row.bias) - row.impulse_scale * row.lambda;
+  const double nl = std::max(row.lambda + dl, 0.0);
+  const double dn = nl - row.lambda;
+  row.lambda = nl;
+  // nl == 0 (separated / speculative contact): the friction bound is 0, so both tangents are 0
+  // whatever J_t v is: skip their products.
+  double l1 = 0.0, l2 = 0.0;
+  if (nl > 0.0) {
+    double j1 = 0.0, j2 = 0.0, j1b = 0.0, j2b = 0.0;  // 2 chains each
+    int k = 0;
+    for (; k + 1 < cnt; k += 2) {
+      const double va = v[ji[k]], vb2 = v[ji[k + 1]];
+      j1 += jx1[k] * va;
+      j2 += jx2[k] * va;
+      j1b += jx1[k + 1] * vb2;
+      j2b += jx2[k + 1] * vb2;
+    }
+    if (k < cnt) {
+      const double va = v[ji[k]];
+      j1 += jx1[k] * va;
+      j2 += jx2[k] * va;
+    }
+    j1 += j1b;
+    j2 += j2b;
+    j1 += f1.coupling * dn;
+    j2 += f2.coupling * dn;
+    const double bound = f1.mu * nl;
+    l1 = f1.lambda - f1.inv_diag * j1;
+    l2 = f2.lambda - f2.inv_diag * j2;
+    if (cone) {
+      const double n2 = l1 * l1 + l2 * l2;
+      if (n2 > bound * bound) {  // sticking contacts skip the sqrt
+        const double nrm = std::sqrt(n2);
+        const double sc = nrm > 0 ? bound / nrm : 0.0;
+        l1 *= sc;
+        l2 *= sc;
+      }
+    } else {
+      l1 = std::clamp(l1, -bound, bound);
+      l2 = std::clamp(l2, -bound, bound);
+    }
+  }
+  const double d1 = l1 - f1.lambda, d2 = l2 - f2.lambda;
+  f1.lambda = l1;
+  f2.lambda = l2;
+  const double* W1 = W + nb;  // the contact's three rows are consecutive with equal ranges
+  const double* W2 = W1 + nb;
+  if (dn != 0.0 || d1 != 0.0 || d2 != 0.0)  // separated (speculative) contacts: no pass
+    for (int i = 0; i < nb; ++i) vb[i] += dn * W[i] + d1 * W1[i] + d2 * W2[i];  // one pass over v
+}
+
+}  // namespace
+
 void solve_pgs(const Model& m, Data& d) {
   const int nr = static_cast<int>(d.rows.size());
   const bool cone = m.solver.friction == FrictionModel::Cone;
   double* v = d.v.data();
-  // Contact blocks (normal r, tangents r+1, r+2 share one sparse index pattern and range): one fused
-  // pass for the three J.v products, the normal update, the tangent updates corrected by the normal's
-  // effect (J_t . W_n, precomputed: exactly Gauss-Seidel order n -> t), and one fused pass updating v.
+  // Rows in order: a limit row alone; a spring's or a contact's three rows as one block.
   for (int it = 0; it < m.solver.iterations; ++it) {
     for (int r = 0; r < nr; ++r) {
       ConstraintRow& row = d.rows[r];
-      const int* ji = d.J_idx.data() + row.nz_begin;
-      const double* jx = d.J_val.data() + row.nz_begin;
-      const double* W = d.MinvJT.data() + row.w_off;
-      const int nb = row.j_end - row.j_begin;
-      double* vb = v + row.j_begin;
       if (row.kind == ConstraintRow::Limit) {
-        const double jv = sparse_dot(ji, jx, row.nz_count, v);
-        const double dl = -row.inv_diag * row.mass_scale * (jv + row.bias) - row.impulse_scale * row.lambda;
-        const double nl = std::max(row.lambda + dl, 0.0);
-        if (nl != row.lambda) axpy_n(nl - row.lambda, W, vb, nb);  // inactive speculative rows: no pass
-        row.lambda = nl;
+        solve_limit_row(d, row, v);
         continue;
       }
-      if (row.kind == ConstraintRow::Spring) {
-        // Box2D v3 mouse joint as a 3-row block: lambda += -mass_scale K^+ (J v + bias) - impulse_scale
-        // lambda, then |lambda| <= max_force dt (the accumulated impulse is clamped, as Box2D does)
-        const int si = row.contact;
-        ConstraintRow& r1 = d.rows[r + 1];
-        ConstraintRow& r2 = d.rows[r + 2];
-        const int cnt = row.nz_count;
-        const Vec3 jv(sparse_dot(ji, jx, cnt, v), sparse_dot(ji, d.J_val.data() + r1.nz_begin, cnt, v),
-                      sparse_dot(ji, d.J_val.data() + r2.nz_begin, cnt, v));
-        const Vec3 l0(row.lambda, r1.lambda, r2.lambda);
-        const Vec3 rhs = jv + Vec3(row.bias, r1.bias, r2.bias);
-        Vec3 l = l0 - row.mass_scale * (d.spring_Kpinv[si] * rhs) - row.impulse_scale * l0;
-        const double lmax = d.point_springs[si].max_force * m.dt;
-        if (l.squaredNorm() > lmax * lmax) l *= lmax / l.norm();
-        const Vec3 dl = l - l0;
-        row.lambda = l[0];
-        r1.lambda = l[1];
-        r2.lambda = l[2];
-        const double* W1 = W + nb;
-        const double* W2 = W1 + nb;
-        for (int i = 0; i < nb; ++i) vb[i] += dl[0] * W[i] + dl[1] * W1[i] + dl[2] * W2[i];
-        r += 2;
-        continue;
-      }
-      // Normal row followed by its two friction rows
-      ConstraintRow& f1 = d.rows[r + 1];
-      ConstraintRow& f2 = d.rows[r + 2];
-      const double* jx1 = d.J_val.data() + f1.nz_begin;
-      const double* jx2 = d.J_val.data() + f2.nz_begin;
-      const int cnt = row.nz_count;
-      const double jn = sparse_dot(ji, jx, cnt, v);
-      const double dl = -row.inv_diag * row.mass_scale * (jn + row.bias) - row.impulse_scale * row.lambda;
-      const double nl = std::max(row.lambda + dl, 0.0);
-      const double dn = nl - row.lambda;
-      row.lambda = nl;
-      // nl == 0 (separated / speculative contact): the friction bound is 0, so both tangents are 0
-      // whatever J_t v is: skip their products.
-      double l1 = 0.0, l2 = 0.0;
-      if (nl > 0.0) {
-        double j1 = 0.0, j2 = 0.0, j1b = 0.0, j2b = 0.0;  // 2 chains each
-        int k = 0;
-        for (; k + 1 < cnt; k += 2) {
-          const double va = v[ji[k]], vb2 = v[ji[k + 1]];
-          j1 += jx1[k] * va;
-          j2 += jx2[k] * va;
-          j1b += jx1[k + 1] * vb2;
-          j2b += jx2[k + 1] * vb2;
-        }
-        if (k < cnt) {
-          const double va = v[ji[k]];
-          j1 += jx1[k] * va;
-          j2 += jx2[k] * va;
-        }
-        j1 += j1b;
-        j2 += j2b;
-        j1 += f1.coupling * dn;
-        j2 += f2.coupling * dn;
-        const double bound = f1.mu * nl;
-        l1 = f1.lambda - f1.inv_diag * j1;
-        l2 = f2.lambda - f2.inv_diag * j2;
-        if (cone) {
-          const double n2 = l1 * l1 + l2 * l2;
-          if (n2 > bound * bound) {  // sticking contacts skip the sqrt
-            const double nrm = std::sqrt(n2);
-            const double sc = nrm > 0 ? bound / nrm : 0.0;
-            l1 *= sc;
-            l2 *= sc;
-          }
-        } else {
-          l1 = std::clamp(l1, -bound, bound);
-          l2 = std::clamp(l2, -bound, bound);
-        }
-      }
-      const double d1 = l1 - f1.lambda, d2 = l2 - f2.lambda;
-      f1.lambda = l1;
-      f2.lambda = l2;
-      const double* W1 = W + nb;  // the contact's three rows are consecutive with equal ranges
-      const double* W2 = W1 + nb;
-      if (dn != 0.0 || d1 != 0.0 || d2 != 0.0)  // separated (speculative) contacts: no pass
-        for (int i = 0; i < nb; ++i) vb[i] += dn * W[i] + d1 * W1[i] + d2 * W2[i];  // one pass over v
+      if (row.kind == ConstraintRow::Spring)
+        solve_spring_block(m, d, r, v);
+      else
+        solve_contact_block(d, r, cone, v);
       r += 2;
     }
   }

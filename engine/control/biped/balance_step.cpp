@@ -103,8 +103,8 @@ StepLanding place_balance_step(StepPlacement how, const Eigen::Vector2d& com, co
       const Eigen::Vector2d across(-vcom.y() / vcom.norm(), vcom.x() / vcom.norm());
       land += (across.dot(land - stance) >= 0.0 ? t.side_margin : -t.side_margin) * across;
     }
-    // Within the leg's reach before the next round's swing time (a huge push's landing otherwise ran off to infinity
-    // through e^{omega T}).
+    // Within the leg's reach before the next iteration's swing time (a huge push's landing otherwise runs off to
+    // infinity through e^{omega T}).
     if ((land - stance).norm() > t.max_reach) land = stance + (land - stance) * (t.max_reach / (land - stance).norm());
     out.to = land;
     T = std::max(t.min_duration, (out.to - from).norm() / t.swing_speed);
@@ -112,9 +112,8 @@ StepLanding place_balance_step(StepPlacement how, const Eigen::Vector2d& com, co
   // Within the leg's reach of the stance foot, not on it, and not across it: a landing on the stance foot's other
   // side (a cross-over), or on its own side closer across than half min_gap, keeps ahead of or behind the stance foot
   // by cross_gap, on the side the capture point puts it (the swing passes around the stance foot, start_balance_step).
-  // By the side the foot came from instead, a forward step from 3 cm behind the stance foot, or one re-planned from
-  // 12.5 to 11.9 cm beside it, jumped 0.5 m behind it while the body ran on forward (forward push, seed 2;
-  // docs/decisions/balance-steps.md, fourth round).
+  // By the side the foot comes from instead, a step starting just behind or beside the stance foot can jump to 0.5 m
+  // behind it while the body runs on forward (docs/decisions/balance-steps.md).
   const Eigen::Vector2d fwd(std::cos(heading), std::sin(heading)), left(-fwd.y(), fwd.x());
   Eigen::Vector2d d = out.to - stance;
   if (d.norm() > t.max_reach) d *= t.max_reach / d.norm();
@@ -169,8 +168,8 @@ void bend_path(BalanceStep& s) {
 // works on the ankle), the path bent around the stance foot, its top and the highest top the sole passes over on
 // the way: along the path, under the sole's whole footprint (its ends, middle and sides, each side widened by the
 // foothold's side margin). Sampled along the path's line alone, a swing passing beside the stance foot's higher crate
-// brushed its side with the sole's edge, and that touch was taken for the landing, 20-30 cm short (forward push
-// 413 N, seeds 7 and 18; docs/decisions/balance-steps.md, seventh round).
+// brushes its side with the sole's edge, and that touch reads as the landing, 20-30 cm short
+// (docs/decisions/balance-steps.md).
 void land_on_foothold(BalanceStep& s, const Eigen::Vector2d& to, GroundHeight ground, const FootGeometry& g,
                       const FootholdParams& fp) {
   const Eigen::Rotation2Dd R(s.yaw);
@@ -207,7 +206,7 @@ void start_balance_step(BalanceStep& s, int foot, bool returning, const Eigen::V
   s.elapsed = 0.0;
   s.rise_until = 0.3, s.travel_from = 0.1;
   // The top the foot stands on: the highest under its sole (heel, toe, middle; at its centre alone, a sole across a
-  // seam between crates read the floor and the swing rose 0.4 m over a 1.3 s step, carried walk seed 24).
+  // seam between crates reads the floor, and the swing rises far too high over a long step).
   const Eigen::Rotation2Dd R(yaw);
   s.from_top = -std::numeric_limits<double>::infinity();
   for (double a : {-1.0, 0.0, 1.0}) {

@@ -29,14 +29,12 @@ enum class StepPlacement { CapturePoint, InvertedPendulumLqr };
 struct BalanceStepTuning {
   double trigger_margin = 0.02;  // m, the capture point this far outside the feet's soles' hull starts a step ...
   double min_speed = 0.15;       // m/s ... with the com moving at least this fast (a body at rest is not pushed)
-  // ... beyond what a root assist holds in place (the match's root spring, torque-limited): an external moment tau on
-  // the pelvis moves the centroidal moment pivot tau / (m g) beyond the feet (Popovic, Goswami & Herr 2005), so the
-  // body holds a capture point that far out without a step; this share of that reach is added to trigger_margin
+  // ... beyond what a root assist holds in place: this share of its reach tau / (m g) beyond the feet (the centroidal
+  // moment pivot, Popovic, Goswami & Herr 2005) is added to trigger_margin
   double assist_reach_share = 0.5;
   double land_margin = 0.05;     // m, the landing's sole centre this far beyond the predicted capture point
   // m, and this far to the side, across the com's motion away from the stance foot: the capture point lands between the
-  // feet, not on the new sole's edge (the com drifts sideways over a single support; landed on its line, the capture
-  // point left the two feet's narrow hull after touch-down and a second, crossing step followed)
+  // feet, not on the new sole's edge (there it leaves the feet's narrow hull, and a crossing step follows)
   double side_margin = 0.08;
   double min_duration = 0.26;    // s, the quickest swing (lift, travel, set down)
   double swing_speed = 2.2;      // m/s, mean horizontal swing speed: a longer step takes longer
@@ -48,10 +46,8 @@ struct BalanceStepTuning {
   double pass_clearance = 0.16;  // m, ... and the swing passing it keeps its sole centre this far from the stance's
   double replan_until = 0.4;     // the landing is re-planned every tick from the body's state until this fraction of the swing
   double replan_move = 0.02;     // m, ... and the foothold searched again when the plan moved this far
-  // ... or, while a push still accelerates the com by more than push_acc (m/s^2; the push observer's, ~150 N on the
-  // boxer), until push_replan_until: a landing frozen while the push still acted came down short. 0.4 s pushes of
-  // Yin's momentum (forward 207 N, sideways 197 N), seeds 1-48: 127 of 144 stood, 109 without; Yin's own 0.2 s pushes
-  // as before (docs/decisions/balance-steps.md, seventh round)
+  // ... or, while a push still accelerates the com by more than push_acc (m/s^2, the push observer's; ~150 N on the
+  // boxer), until push_replan_until: a landing frozen while the push acts comes down short (balance-steps.md)
   double push_acc = 2.0;
   double push_replan_until = 0.6;
   double push_filter_tau = 0.01;  // s, the observer's low-pass
@@ -59,57 +55,36 @@ struct BalanceStepTuning {
   double settle_speed = 0.15;    // m/s, com speed under which the return phase may start (Yin's gamma)
   double settle_time = 0.4;      // s, ... for this long, after the last landing
   double return_tolerance = 0.10;  // m, a foot this far from its stance place relative to the other returns
-  // m, ... unless the feet stand as the body can fight from: the left foot this far left of the right (across the
-  // heading; not crossed, not in line) and between min_gap and max_reach apart. A return step is a single support
-  // from a wide stance, the recovery's riskiest phase: a forward push's step leaves the feet swapped, 0.9 m from the
-  // guard's, and their return fell more often than the push.
+  // m, ... unless the feet stand as the body can fight from: the left foot this far left of the right, min_gap to
+  // max_reach apart (a return step, one foot from a wide stance, is the recovery's riskiest phase)
   double return_keep_width = 0.10;
   double return_duration = 0.45;   // s, the return step's swing (unhurried)
-  // The return step is the other foot's when this one's would land off the platform, on the floor, from a stance on a
-  // crate (and the other's would not): returned where the stance has it relative to the other, a foot pushed near the
-  // platform's edge stepped down 0.36 m to the floor and the boxer stood in a long lunge across the edge until its next
-  // balance step failed (right 394 N, seed 3: fell at 9.8 s). Yin's five pushes, seeds 1-96, 14 s: 442 -> 447 of 480
-  // stand, 10 returns changed, none fell that stood (docs/decisions/balance-steps.md, fifteenth round).
+  // The other foot returns when this one's return would step off the platform to the floor from a crate (and the
+  // other's would not): a lunge across the platform's edge is a poor stance for the next push (balance-steps.md)
   bool return_onto_platform = true;
   bool replace_edge_foot = true;  // re-place a foot left on a poor foothold where no return is taken (boxer_stepping.cpp)
   // ... onto one good by both the clips' margins (the test of a poor one: the core 1.5 cm inside the top's sides) and
   // the balance step's clearance (its landing's search then finds it good as it is)
   FootholdParams replace_foothold = {.side_margin = 0.015, .clearance = 0.05, .sole = {}};
-  // Once a return or re-placement lands and the body settles, the feet are looked at again, as at the recovery's end
-  // (a return if the stance is not one to fight from, else a re-placement), at most this many times a recovery: a
-  // return can land on an edge too (12 of 51 return landings on Yin's five pushes, seeds 1-20), and a re-placement
-  // can leave the other foot on one. Yin's five, seeds 1-96, 14 s: a foot on an edge at the end for 107 of 455
-  // standing with none, 87 with 1, 65 with 2, 57 with 4; 454 stand with any (docs/decisions/balance-steps.md,
-  // eighteenth round).
+  // The feet looked at again (return, else re-placement) after a return or re-placement lands, at most this many times
+  // a recovery: a return can land on an edge too, a re-placement leave the other foot on one (balance-steps.md)
   int follow_ups = 4;
-  // m, it lifts once the capture point is this far inside the other sole. 4 cm was not reached by a fifth of the
-  // shifts: the com came to rest 1-4 cm short of it and the shift was given up (Yin's pushes, seeds 1-40). 2 cm with
-  // the com still moving (0.35 m/s, before return_lift_speed) ran off the stance toe's edge (match seed 19 with the
-  // stagger); at rest it holds (docs/decisions/balance-steps.md, thirteenth round) ...
+  // m, it lifts once the capture point is this far inside the other sole (a wider margin is often not reached: the com
+  // comes to rest short of it; balance-steps.md) ...
   double return_shift_margin = 0.02;
-  // s, ... and is given up when the weight shift takes longer (1 s: a shift of 0.2-0.3 m at the balance QP's
-  // return_shift_speed was given up before the com got there, and the feet stayed crossed to the end) ...
+  // s, ... and is given up when the weight shift takes longer (a 0.2-0.3 m shift at the balance QP's
+  // return_shift_speed takes over 1 s) ...
   double return_shift_max = 2.5;
-  // m/s, ... and the com has come to rest over it (the shift done, not passing through: lifted with the com moving
-  // at 0.35 m/s, the body ran on off the stance foot's edge; match seed 19 with the stagger; at 0.15 m/s, still
-  // moving toward the stance foot's far side as the shift's target stopped, it ran off during the swing)
+  // m/s, ... and the com has come to rest over it (the shift done, not passing through: a foot lifted with the com
+  // still moving lets the body run on off the stance foot's edge)
   double return_lift_speed = 0.06;
-  // The swing leg lands with at most this share of its length (hip to ankle, knee straight) between its hip and the
-  // landing's ankle: for a landing lower than that, the com comes down (the stance knee bends; step_reach_drop, the
-  // balance QP's com height task, at most its max_com_acc). Held at the clip's height, the com stayed up (it rose 6 cm
-  // as the body leaned over the stance foot's higher crate) and a crossing step sent to a top 0.22 m below the
-  // stance's hung 10 cm over it, knee straight, until the swing's time ran out and the body fell (right 394 N, seed
-  // 24). Yin's five pushes, seeds 1-48 / 49-96: 230 / 230 of 240 stand (225 / 218 without), and no landing is set
-  // down by time (15 of 489 steps before, 9 of those runs fell). Shares 0.9, 0.93, 0.95, 0.97 and 1.0 (an earlier
-  // build, seeds 1-48): 230, 229, 233, 232 and, on 49-96, 225 for 1.0 (docs/decisions/balance-steps.md, ninth round).
+  // The swing leg lands with at most this share of its length (hip to ankle) between hip and landing ankle: for a lower
+  // landing the com comes down (the QP's step_reach_drop), else the leg hangs over it (balance-steps.md)
   double reach_share = 0.95;
   double reach_max_drop = 0.25;  // m, the com is sent at most this far below where it is
   int max_steps = 6;             // balance steps in one recovery (a multi-step stop), then the fall is let happen
-  // Where a balance step may land (foothold.h): wider margins than the clips' steps, since a recovery's landing
-  // misses by 5 cm (median; 14 cm at the 90th percentile): the sole's core 3.5 cm inside its top's sides (1.5) and no
-  // higher top within 5 cm of the sole. With the clips' margins a fifth of the landings on the crates touched down
-  // early (8% with these), a toe on the side of a higher crate or a sole on the platform's edge that slid off it
-  // (docs/decisions/balance-steps.md, fourth round).
+  // Where a balance step may land (foothold.h): wider margins than the clips' steps (a recovery's landing misses by
+  // ~5 cm): the sole's core 3.5 cm inside its top's sides, no higher top within 5 cm (balance-steps.md)
   FootholdParams foothold = {.side_margin = 0.035, .clearance = 0.05, .sole = {}};
   // InvertedPendulumLqr: Kwon & Hodgins' Q = diag(0, 30000, 30000, 0), R = 1 on (cart x, angle, cart v, angular v).
   double cart_mass_fraction = 0.15;  // the cart (the support: feet and shanks) as a fraction of the body's mass
@@ -173,11 +148,10 @@ int unloaded_foot(const Eigen::Vector2d& vcom, const Eigen::Vector2d sole[2]);
 
 // The foot that steps when both stand: the one whose sole (its counter-clockwise hull) lies farther from the capture
 // point xi; the other carries the body toward where it is going. For a push this is Yin's unloaded foot (the com and
-// its capture point move toward the foot the push loads): on Yin's five pushes, seeds 1-48, this rule applied only
-// below 0.7 m/s of com speed, or at every speed, stood and fell on the same runs. They differ when a first step has
-// left a long diagonal stance, the com nearly at rest and its capture point drifting out across the feet's line: the
-// velocity's direction then says little, Yin's rule lifted the foot nearer the capture point, and the swing over the
-// far foot threw the com at 1 m/s (left 394 N, seeds 5 and 16; docs/decisions/balance-steps.md, eighth round).
+// its capture point move toward the foot the push loads). They differ when a first step has left a long diagonal
+// stance, the com nearly at rest and its capture point drifting out across the feet's line: the velocity's direction
+// then says little, and Yin's rule would lift the foot nearer the capture point and swing it over the far foot
+// (docs/decisions/balance-steps.md).
 // Ties: foot 0 stands.
 int stepping_foot(const std::vector<Eigen::Vector2d> sole_hull[2], const Eigen::Vector2d& xi);
 
@@ -229,10 +203,10 @@ double step_reach_drop(const Eigen::Vector3d& hip, const Eigen::Vector3d& ankle,
 // The swing's sole-centre target at the step's elapsed time (world): horizontal C1 ease along the path, lifted
 // over the path's highest top by `lift` mid-swing, set down `press` into the landing top at the end.
 // Its velocity (the path's derivative at the elapsed time): the swing's feed-forward. (Differenced tick to tick
-// instead, a re-planned landing's jump read as a 4-5 m/s kick and the foot overshot by 40 cm.)
+// instead, a re-planned landing's jump reads as a kick of metres per second and the foot overshoots.)
 // Its acceleration (the second derivative): the feed-forward's other half. A PD on position and velocity alone trails a
 // reference that accelerates by a / omega^2; the ease stops the sole in the swing's last 15 %, at 50-100 m/s^2, and
-// without it the foot ran on 3 cm past its landing (median, Yin's five pushes; docs/decisions/balance-steps.md).
+// without it the foot runs on past its landing (docs/decisions/balance-steps.md).
 Eigen::Vector3d balance_step_sole_target(const BalanceStep& s, const BalanceStepTuning& t,
                                          Eigen::Vector3d* velocity = nullptr, Eigen::Vector3d* acceleration = nullptr);
 

@@ -1,7 +1,7 @@
 #pragma once
 // FOOT CONTACTS, worked out once per contact set (after each physics step, and once at the start) and read by every
 // consumer of the tick: the servo's support legs, the balance QP's load-bearing feet, the lift-off gate's stance
-// contacts and the fall detection. Each consumer was tuned with its own "touching" depth, so the struct keeps one
+// contacts and the fall detection. Each consumer is tuned with its own "touching" depth, so the struct keeps one
 // named flag per purpose, each with its threshold; docs/decisions/foot-contact-thresholds.md says what unifying
 // them would change. Contact depth: > 0 penetrating, < 0 a speculative gap (m).
 #include <Eigen/Core>
@@ -22,8 +22,8 @@ struct FootContactThresholds {
 };
 
 // Ground contacts a foot's list holds without growing (its capacity from construction): a sole over four crate tops
-// at the narrowphase's 4 points a pair is 16; twice that. A list growing past its warm-up size mid-recovery was an
-// allocation in the world's step (tests/game/world_alloc_test.cpp).
+// at the narrowphase's 4 points a pair is 16; twice that. A list growing past its warm-up size mid-recovery would
+// allocate in the world's step (tests/game/world_alloc_test.cpp).
 inline constexpr int kFootContactCapacity = 32;
 
 struct FootContacts {

@@ -40,7 +40,7 @@ namespace {
 // Candidates in order of cost (ties: the grid order, deterministic); a search takes the first good one. The order
 // depends on the search's shape alone, so it is sorted once per thread and shape, not per call: a balance step
 // searches every tick it re-plans, and the step allocates nothing once warm. A few shapes are kept (balance steps'
-// and carried steps' footholds alternate; re-sorted at each switch, the sort was an allocation in the walk's step).
+// and carried steps' footholds alternate; re-sorted at each switch, the sort would allocate in the world's step).
 struct Candidate {
   double cost;
   int i, j;

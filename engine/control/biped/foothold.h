@@ -3,9 +3,8 @@
 //
 // WHY. The crates are 0.5 m cells whose tops differ by up to 24 cm, the sole is 26 cm long, and the motion graph's
 // steps are authored on a flat floor. Landed where the clip says, a sole often straddles a seam: its heel or toe
-// rests on the edge of a higher crate, the foot tilts over that edge and the support shrinks to a line (walk seed
-// 10: both feet on edges after a step_back, three contact points, the centre of mass drifting out of the support
-// and the boxer falling 1 s later). A person looks where they step; the foot placement here does the same: the
+// rests on the edge of a higher crate, the foot tilts over that edge and the support shrinks to a line, which the
+// centre of mass soon drifts out of. A person looks where they step; the foot placement here does the same: the
 // smallest shift of the landing spot that puts the sole's core on the highest crate top under the sole.
 #include <Eigen/Core>
 

@@ -31,7 +31,7 @@ void start_step(StepPlan& st, const Touchdown& td, const Eigen::Vector3d& ankle_
     return;
   }
   // Carried: landed where the clip has it relative to the stance foot (the anchored placement puts it relative to
-  // both feet as they stood, so a stretched stance stayed stretched), unless the body has turned off the heading.
+  // both feet as they stand, so a stretched stance stays stretched), unless the body has turned off the heading.
   const Eigen::Vector2d relative = stance_ankle + heading_R * td.apart;
   const Eigen::Vector2d from_ankle = from.head<2>() - centre;
   if ((relative - from_ankle).norm() < td.travel.norm() + t.carry_max_extra) st.landing = relative;
@@ -45,8 +45,8 @@ void start_step(StepPlan& st, const Touchdown& td, const Eigen::Vector3d& ankle_
   if (st.path.path_top > st.path.from_top + t.step_up_tolerance) {
     // Past a higher top's edge: the sole rises at carry_rise_speed and travels only once it is carry_edge_clearance
     // above that top (the smoothstep rise's inverse, v = 1/2 - sin(asin(1 - 2 f) / 3)), then in the clip's time.
-    // Travelling from the swing's start, a heel 1 cm from a higher crate's side caught on its edge, the foot pivoted
-    // on it and the body fell over the stance foot (carried walks, seeds 3 and 11).
+    // Travelling from the swing's start, a heel near a higher crate's side catches on its edge, the foot pivots on it
+    // and the body falls over the stance foot (docs/decisions/footwork.md).
     const double f = std::clamp((st.path.path_top + t.carry_edge_clearance - st.path.from_top) / rise, 0.0, 1.0);
     const double v = 0.5 - std::sin(std::asin(1.0 - 2.0 * f) / 3.0);
     st.duration = std::max({st.duration, rise_time / 0.5, (v * rise_time + 0.75 * td.ahead) / 0.85});

@@ -31,8 +31,8 @@ struct StepTuning {
   FootholdParams foothold;           // the landing's search
   // Carried steps (off: the shuffle above). A clip step travelling at least carry_min_travel swings on its own path,
   // carry_lift over the highest top on its way and set down carry_press into its landing top; a swing that must rise
-  // takes at least (rise + lift) / carry_rise_speed (a shuffle's 0.13 s rose too late: the heel caught a higher
-  // crate's edge and the foot stalled), and past a higher top's edge it rises at that speed and travels once
+  // takes at least (rise + lift) / carry_rise_speed (a shuffle's 0.13 s rises too late: the heel catches a higher
+  // crate's edge), and past a higher top's edge it rises at that speed and travels once
   // carry_edge_clearance above the top; the landing relative to the stance foot unless that lands more than
   // carry_max_extra farther than the clip's travel from the foot (the body has turned off the stance's heading).
   bool carry = false;
@@ -45,13 +45,11 @@ struct StepTuning {
   double carry_late = 0.15;         // s, a carried swing not down this long after its duration is set down anyway
   double carry_in_place = 0.02;     // m, a carried landing this near where the foot stands is not stepped (the gate's)
   double carry_pass_clearance = 0.16;  // m, the path bent around the stance foot (balance_step.h)
-  // A carried step the lift-off gate held for its weight shift lifts as the clip's whole step: its travel and swing
-  // as at the clip's lift-off, not what is left of them (false: what is left). Held, a step_forward's rear foot had
-  // 3 cm of the clip's travel left, too little to carry and too late to swing: it stayed, and the stance stretched.
+  // A carried step the lift-off gate held for its weight shift lifts as the clip's whole step (false: what is left of
+  // its travel and swing, often too little to carry: the foot stays and the stance stretches)
   bool carry_whole = true;
-  // The carried landing's foothold: the balance steps' margins (a swing lands within a few cm, not exactly), and a
-  // shift away from the stance foot (a longer step) costs 4 times one toward it: a landing shifted 9-13 cm farther
-  // stretched the stance to 0.8 m and the next steps fell out of it.
+  // The carried landing's foothold: the balance steps' margins, and a shift away from the stance foot costs 4 times
+  // one toward it (a landing shifted farther stretches the stance, and the next steps fall out of it)
   FootholdParams carry_foothold = {.side_margin = 0.035, .back_cost = 4.0, .clearance = 0.05, .sole = {}};
 };
 

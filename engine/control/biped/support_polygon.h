@@ -35,9 +35,9 @@ double outside_distance(const std::vector<Eigen::Vector2d>& hull, const Eigen::V
 // p lies `margin` inside the hull. Unchanged when the hull has no area.
 // Where the com's own projection is not `margin` inside, no acceleration is free (p = com there) and what the com
 // task asks is the caller's to buy (the root assist). It is handed over in a ramp, none of it at `margin` inside, all
-// of it `ramp` further out (0: all at once): handed over whole at the margin, the demand jumped from the soles' ~0 to
-// the com task's 6 m/s^2 in one tick, and the walks' remaining assist came in those jumps (230 N m bursts as a
-// rolled foot's few contacts shrank the hull under the com; docs/decisions/com-acceleration-in-support.md).
+// of it `ramp` further out (0: all at once): handed over whole at the margin, the demand jumps from the soles' ~0 to
+// the com task's full acceleration in one tick, and the root assist comes in bursts as a rolled foot's few contacts
+// shrink the hull under the com (docs/decisions/com-acceleration-in-support.md).
 Eigen::Vector3d ground_com_acceleration(const std::vector<Eigen::Vector2d>& hull, const Eigen::Vector3d& com,
                                         const Eigen::Vector3d& acc, double z, double margin, double ramp = 0.0,
                                         double g = 9.81);
