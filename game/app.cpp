@@ -114,7 +114,7 @@ nlohmann::json base_report(const Options& o, const World& w, long frames, const 
 eng::Result<void> write_report(const std::string& path, const nlohmann::json& j) {
   if (path.empty()) return {};
   const std::string fail = "boxing: cannot write report '" + path + "' (check the folder exists and is writable)";
-  std::error_code ec;  // (the throwing overload ended the program on a read-only parent)
+  std::error_code ec;  // the non-throwing overload: a read-only parent is this error, not an exception
   if (auto parent = fs::path(path).parent_path(); !parent.empty()) fs::create_directories(parent, ec);
   if (ec) return eng::make_error(fail + ": " + ec.message());
   std::ofstream f(path);
@@ -234,6 +234,293 @@ constexpr std::pair<int, const char*> kFightKeys[] = {
     {GLFW_KEY_B, "block"},         {GLFW_KEY_A, "slip_left"},    {GLFW_KEY_D, "slip_right"},
     {GLFW_KEY_S, "duck"},          {GLFW_KEY_W, "step_forward"}, {GLFW_KEY_X, "step_back"}};
 
+const char* const kCameras[] = {"default", "closeup", "side", "top"};  // the C key's cycle
+
+// The instant replay (match): a second after a knockdown, the 1.5 s before it and the second after, at 0.35x from
+// the side camera; the simulation waits (it is not stepped), so the fight is the same with or without replays.
+struct Replay {
+  bool active = false;
+  double pending = -1.0, from = 0.0, to = 0.0, at = 0.0;
+  int knockdowns = 0;
+};
+
+// What the window's loop carries from one frame to the next.
+struct WindowRun {
+  const Options& o;
+  std::unique_ptr<World>& world;  // replaced by a restart
+  eng::platform::Window& win;
+  eng::render::Renderer& r;
+  SceneView view;
+  eng::render::FrameDesc f;
+  OrbitCamera orbit;
+  int camera_index = 0;
+  bool overlay = true;
+  PanelState panel;
+  MouseHands hands;
+  bool left_was_down = false;
+  RunTimes times;
+  long frames = 0, frames_shown = 0;  // simulated 60 Hz frames; frames shown
+  int shots = 0;                      // F12 screenshots so far
+  double accumulator = 0.0;           // real time (scaled by the slow motion) not yet simulated, s
+  clock_type::time_point last_shown{}, last_sim{}, last_ui{};
+  Replay replay;
+  Eigen::VectorXd live_q;  // the live coordinates while a replay shows recorded ones
+  glm::dvec2 last_mouse;
+
+  WindowRun(const Options& options, std::unique_ptr<World>& w, eng::platform::Window& window,
+            eng::render::Renderer& renderer)
+      : o(options), world(w), win(window), r(renderer), view(make_scene_view(*w, renderer)) {
+    for (int i = 0; i < 4; ++i)
+      if (o.camera == kCameras[i]) camera_index = i;
+    orbit.from(camera_preset(kCameras[camera_index], *world));
+    overlay = o.overlay_given ? o.overlay : true;
+    panel.seed = int(o.seed);
+    panel.slow = o.slow == 2 ? 1 : o.slow == 4 ? 2 : o.slow == 10 ? 3 : 0;
+    last_sim = clock_type::now();
+    last_mouse = win.mouse_position();
+    last_ui = clock_type::now();
+  }
+};
+
+// This frame's UI input, read once after the events are polled, and the camera and cursor ray it gives.
+struct FrameInput {
+  eng::ui::UiInput uin;
+  float ui_dt = 0.0f;  // s since the last UI frame
+  bool ui_mouse = false, ui_keys = false;  // the mouse / the keys belong to a panel
+  eng::render::Camera cam;
+  bool mouse_in = false;  // the cursor is over the window
+  CameraRay ray;
+};
+
+// The panel's restart: a new world with the panel's seed (the recording starts again with it); the view keeps its
+// ghost and debug drawing.
+void restart_if_asked(WindowRun& s) {
+  if (!s.panel.restart) return;
+  s.panel.restart = false;
+  Options ro = s.world->options;
+  ro.seed = uint64_t(s.panel.seed);
+  auto again = make_world(ro);
+  if (!again) {
+    std::fprintf(stderr, "%s\n", again.error().c_str());
+    return;
+  }
+  s.world = std::move(*again);
+  SceneView v = make_scene_view(*s.world, s.r);
+  v.ghost = s.view.ghost, v.debug = s.view.debug;
+  s.view = std::move(v);
+  s.hands = MouseHands{};
+  s.replay = {};
+}
+
+// The UI frame opens first: it says whether this frame's mouse and keys belong to a panel or to the scene; the
+// panels are built after the simulation (they show its time) and the frame ends before rendering.
+FrameInput begin_ui_frame(WindowRun& s) {
+  FrameInput in;
+  const auto ui_now = clock_type::now();
+  in.ui_dt = std::max(1e-4f, std::chrono::duration<float>(ui_now - s.last_ui).count());
+  s.last_ui = ui_now;
+  in.uin = s.win.ui_input(in.ui_dt);
+  eng::ui::ui_begin(s.r.ui(), in.uin);
+  in.ui_mouse = eng::ui::ui_wants_mouse(s.r.ui());
+  in.ui_keys = eng::ui::ui_wants_keyboard(s.r.ui());
+  in.cam = s.orbit.to(camera_preset(kCameras[s.camera_index], *s.world));
+  in.mouse_in = in.uin.mouse_x > -1e30f;
+  in.ray = camera_ray(in.cam, in.uin.mouse_x, in.uin.mouse_y, in.uin.display_width, in.uin.display_height);
+  return in;
+}
+
+// The keys, unless a panel has the keyboard: quit, overlay, ghost, camera, the fight keys, throws, the panel's keys.
+void handle_keys(WindowRun& s, const FrameInput& in) {
+  if (in.ui_keys) return;
+  World& w = *s.world;
+  eng::platform::Window& win = s.win;
+  if (win.key_pressed(GLFW_KEY_ESCAPE)) win.request_close();
+  if (win.key_pressed(GLFW_KEY_H)) s.overlay = !s.overlay;
+  if (win.key_pressed(GLFW_KEY_G)) s.view.ghost = !s.view.ghost;
+  if (win.key_pressed(GLFW_KEY_C)) {
+    s.camera_index = (s.camera_index + 1) % 4;
+    s.orbit.from(camera_preset(kCameras[s.camera_index], w));
+  }
+  // The fight keys: the first one takes over the red boxer (or the --player one) from the AI.
+  if (w.match->active)
+    for (const auto& [key, action] : kFightKeys)
+      if (win.key_pressed(key)) {
+        InputEvent e;
+        e.kind = InputKind::Key;
+        e.action = action;
+        e.boxer = s.o.player >= 0 ? s.o.player : 0;
+        interaction_submit(w, e);
+      }
+  // Throws from the camera toward the cursor; Backspace clears them.
+  if (in.mouse_in && win.key_pressed(GLFW_KEY_T)) interaction_submit(w, throw_from_camera(w, in.ray, ObjectKind::Ball));
+  if (in.mouse_in && win.key_pressed(GLFW_KEY_Y)) interaction_submit(w, throw_from_camera(w, in.ray, ObjectKind::Crate));
+  if (win.key_pressed(GLFW_KEY_BACKSPACE)) {
+    InputEvent e;
+    e.kind = InputKind::Clear;
+    interaction_submit(w, e);
+  }
+  handle_panel_keys(w, s.view, s.panel,
+                    {[](const void* c, int k) { return static_cast<const eng::platform::Window*>(c)->key_pressed(k); },
+                     &win});
+}
+
+// The mouse: the left button grabs what is under the cursor, drags it and lets go (the panel keeps its own clicks);
+// the right button orbits the camera and the wheel zooms (a held body takes the wheel instead).
+void handle_mouse(WindowRun& s, const FrameInput& in) {
+  World& w = *s.world;
+  const glm::dvec2 mouse = s.win.mouse_position();
+  const bool left = in.uin.mouse_down[0];
+  const double wheel = in.uin.wheel_y;
+  if (left && !s.left_was_down && !in.ui_mouse && in.mouse_in) {
+    const bool strong = s.win.key_down(GLFW_KEY_LEFT_SHIFT) || s.win.key_down(GLFW_KEY_RIGHT_SHIFT);
+    hands_press(w, s.hands, in.ray, in.cam, strong);
+  } else if (left && s.hands.held && in.mouse_in) {
+    hands_drag(w, s.hands, in.ray, in.cam, wheel);
+  } else if (!left && s.hands.held) {
+    hands_release(w, s.hands);
+  }
+  s.left_was_down = left;
+  if (!in.ui_mouse) {  // drags and the wheel over a panel are the panel's
+    if (s.win.mouse_button_down(GLFW_MOUSE_BUTTON_RIGHT)) {
+      s.orbit.yaw -= float(mouse.x - s.last_mouse.x) * 0.006f;
+      s.orbit.pitch = std::clamp(s.orbit.pitch + float(mouse.y - s.last_mouse.y) * 0.006f, -0.1f, 1.5f);
+    }
+    if (!s.hands.held)
+      s.orbit.dist = std::clamp(s.orbit.dist * std::pow(0.9f, float(s.win.scroll_delta().y)), 1.0f, 20.0f);
+  }
+  s.last_mouse = mouse;
+}
+
+// Fixed 60 Hz simulation frames, as many as real time (scaled by the slow motion) asks for: the simulated clock
+// keeps up with the wall clock down to 4 rendered frames a second (a frame of two boxers' physics costs about
+// 1 ms, so the catch-up of 15 frames is 15 ms); below that, at most 0.25 s a frame, the game slows down instead
+// of spiralling. Paused or in a replay: only the panel's single steps. --seconds closes the window.
+void step_simulation(WindowRun& s) {
+  World& w = *s.world;
+  constexpr double kMaxCatchUp = 0.25;
+  const auto now = clock_type::now();
+  s.accumulator =
+      std::min(s.accumulator + time_scale(s.panel) * std::chrono::duration<double>(now - s.last_sim).count(), kMaxCatchUp);
+  s.last_sim = now;
+  if (s.replay.active || s.panel.paused) s.accumulator = 0.0;
+  if (s.panel.step_once && !s.replay.active) s.accumulator = 1.0 / 60.0, s.panel.step_once = false;
+  while (s.accumulator >= 1.0 / 60.0) {
+    const auto t0 = clock_type::now();
+    for (int k = 0; k < kStepsPerFrame; ++k) step_world(w);
+    s.times.sim.ms.push_back(std::chrono::duration<double, std::milli>(clock_type::now() - t0).count());
+    s.accumulator -= 1.0 / 60.0;
+    ++s.frames;
+  }
+  if (s.o.seconds > 0 && w.data.time >= s.o.seconds) s.win.request_close();
+}
+
+// A knockdown in the match schedules the instant replay a second later; it starts once the replay buffer has
+// frames, from the live coordinates kept in live_q.
+void watch_for_replay(WindowRun& s) {
+  World& w = *s.world;
+  if (!w.match->active) return;
+  Replay& replay = s.replay;
+  const int kd = w.match->fighter[0].knockdowns + w.match->fighter[1].knockdowns;
+  if (kd > replay.knockdowns && !replay.active) replay.pending = w.data.time + 1.0, replay.from = w.data.time - 1.5;
+  replay.knockdowns = kd;
+  if (replay.pending >= 0.0 && w.data.time >= replay.pending && w.match->replay.count() > 0) {
+    replay.active = true;
+    replay.pending = -1.0;
+    replay.to = w.data.time;
+    replay.at = std::max(replay.from, w.match->replay.time(0));
+    s.live_q = w.data.q;
+  }
+}
+
+// The HUD and the panels (with the overlay on), then the UI frame ends.
+void draw_panels(WindowRun& s) {
+  World& w = *s.world;
+  if (s.overlay) {
+    char status[160];
+    std::snprintf(status, sizeof status, "t = %.2f s  %s  scenario %s  seed %llu", w.data.time,
+                  s.panel.paused ? "PAUSED" : time_scale_name(s.panel), s.o.scenario.c_str(),
+                  static_cast<unsigned long long>(w.options.seed));
+    // Narrow enough to clear the match panel at 1280 px; the other keys are listed in the control panel.
+    // The HUD shows the frame as the player gets it: from one shown frame to the next.
+    HudStats stats{s.times.frame.ms.empty() ? 0.0f : float(s.times.frame.ms.back()), s.r.device_name(),
+                   {status, "F12 shot  H overlay  C camera  Tab panel  Esc quit"}};
+    draw_stats_panel(stats);
+    draw_control_panel(w, s.view, s.panel);
+  }
+  if (s.overlay && w.match->active) {
+    MatchHud hud = match_hud(w);
+    if (s.replay.active) hud.banner = "REPLAY";
+    draw_match_panel(hud);
+  }
+  eng::ui::ui_end(s.r.ui());
+}
+
+// The frame: the live scene from the orbit camera, or during a replay the recorded coordinates of its moment from
+// the side camera (the live ones restored after), then rendered and presented. False when rendering failed.
+bool render_frame(WindowRun& s, const FrameInput& in) {
+  World& w = *s.world;
+  const auto t1 = clock_type::now();
+  if (s.replay.active) {
+    const ReplayBuffer& rb = w.match->replay;
+    const int i = rb.at_or_before(s.replay.at);
+    std::copy(rb.q(i), rb.q(i) + rb.nq(), w.data.q.data());
+    eng::physics::forward_kinematics(w.model, w.data);
+    fill_frame(w, s.view, s.f);
+    s.f.camera = camera_preset("side", w);
+    w.data.q = s.live_q;
+    eng::physics::forward_kinematics(w.model, w.data);
+    s.replay.at += 0.35 * in.ui_dt;
+    if (s.replay.at > s.replay.to) s.replay.active = false;
+  } else {
+    fill_frame(w, s.view, s.f);
+    s.f.camera = in.cam;
+  }
+  s.f.overlay = s.overlay;
+  if (auto ok = s.r.render(s.f); !ok) {
+    std::fprintf(stderr, "boxing: rendering failed: %s\n", ok.error().c_str());
+    return false;
+  }
+  const auto t2 = clock_type::now();
+  s.times.render.ms.push_back(std::chrono::duration<double, std::milli>(t2 - t1).count());
+  if (s.frames_shown++ > 0) s.times.frame.ms.push_back(std::chrono::duration<double, std::milli>(t2 - s.last_shown).count());
+  s.last_shown = t2;
+  s.times.frame_done();
+  return true;
+}
+
+// F12 saves out/screenshot_NNN.png; --screenshot saves the last frame when the window closes.
+void save_screenshot_if_asked(WindowRun& s) {
+  if (!s.win.key_pressed(GLFW_KEY_F12) && (s.o.screenshot.empty() || !s.win.should_close())) return;
+  std::string path = s.o.screenshot;
+  if (path.empty() || !s.win.should_close()) {
+    char name[64];
+    std::snprintf(name, sizeof name, "out/screenshot_%03d.png", ++s.shots);
+    path = name;
+  }
+  auto img = s.r.read_back();
+  if (img && save_png(*img, path).ok()) std::printf("boxing: screenshot saved to %s\n", path.c_str());
+  else std::fprintf(stderr, "boxing: screenshot failed\n");
+}
+
+// After the window closes: the report, the recording, and the exit code (1 on a validation error).
+int finish_windowed(WindowRun& s) {
+  World& w = *s.world;
+  if (auto ok = write_report(s.o.report, base_report(s.o, w, s.frames, s.r, s.times, false)); !ok) {
+    std::fprintf(stderr, "%s\n", ok.error().c_str());
+    return 1;
+  }
+  if (auto ok = write_recording(s.o, w); !ok) {
+    std::fprintf(stderr, "%s\n", ok.error().c_str());
+    return 1;
+  }
+  if (s.r.validation_errors() > 0) {
+    std::fprintf(stderr, "boxing: %d Vulkan validation errors (see above)\n", s.r.validation_errors());
+    return 1;
+  }
+  return 0;
+}
+
+// The window: one loop of stages a frame, in this order; the simulation steps between the input and the panels.
 int run_windowed(const Options& o) {
   auto made = make_world(o);
   if (!made) {
@@ -256,222 +543,21 @@ int run_windowed(const Options& o) {
     std::fprintf(stderr, "boxing: %s\n", renderer.error().c_str());
     return 1;
   }
-  eng::render::Renderer& r = **renderer;
-  eng::platform::Window& win = **window;
-  SceneView view = make_scene_view(*world, r);
-  const char* cameras[] = {"default", "closeup", "side", "top"};
-  int camera_index = 0;
-  for (int i = 0; i < 4; ++i)
-    if (o.camera == cameras[i]) camera_index = i;
-  eng::render::FrameDesc f;
-  OrbitCamera orbit;
-  orbit.from(camera_preset(cameras[camera_index], *world));
-  bool overlay = o.overlay_given ? o.overlay : true;
-  PanelState panel;
-  panel.seed = int(o.seed);
-  panel.slow = o.slow == 2 ? 1 : o.slow == 4 ? 2 : o.slow == 10 ? 3 : 0;
-  MouseHands hands;
-  bool left_was_down = false;
-  RunTimes times;
-  FrameTimes &sim = times.sim, &render = times.render;
-  long frames = 0, frames_shown = 0;
-  int shots = 0;
-  double accumulator = 0.0;
-  clock_type::time_point last_shown{};
-  auto last = clock_type::now();
-  // The instant replay (match): a second after a knockdown, the 1.5 s before it and the second after, at 0.35x from
-  // the side camera; the simulation waits (it is not stepped), so the fight is the same with or without replays.
-  struct {
-    bool active = false;
-    double pending = -1.0, from = 0.0, to = 0.0, at = 0.0;
-    int knockdowns = 0;
-  } replay;
-  Eigen::VectorXd live_q;
-  glm::dvec2 last_mouse = win.mouse_position();
-  auto last_ui = clock_type::now();
-  while (!win.should_close()) {
-    if (panel.restart) {  // a new world with the panel's seed (the recording starts again with it)
-      panel.restart = false;
-      Options ro = world->options;
-      ro.seed = uint64_t(panel.seed);
-      auto again = make_world(ro);
-      if (again) {
-        world = std::move(*again);
-        view = [&] {
-          SceneView v = make_scene_view(*world, r);
-          v.ghost = view.ghost, v.debug = view.debug;
-          return v;
-        }();
-        hands = MouseHands{};
-        replay = {};
-      } else {
-        std::fprintf(stderr, "%s\n", again.error().c_str());
-      }
-    }
-    World& w = *world;
-    win.poll_events();
-    // The UI frame opens first: it says whether this frame's mouse and keys belong to a panel or to the scene; the
-    // panels are built after the simulation (they show its time) and the frame ends before rendering.
-    const auto ui_now = clock_type::now();
-    const float ui_dt = std::max(1e-4f, std::chrono::duration<float>(ui_now - last_ui).count());
-    last_ui = ui_now;
-    const eng::ui::UiInput uin = win.ui_input(ui_dt);
-    eng::ui::ui_begin(r.ui(), uin);
-    const bool ui_mouse = eng::ui::ui_wants_mouse(r.ui()), ui_keys = eng::ui::ui_wants_keyboard(r.ui());
-    const eng::render::Camera cam = orbit.to(camera_preset(cameras[camera_index], w));
-    const bool mouse_in = uin.mouse_x > -1e30f;
-    const CameraRay ray = camera_ray(cam, uin.mouse_x, uin.mouse_y, uin.display_width, uin.display_height);
-    if (!ui_keys) {
-      if (win.key_pressed(GLFW_KEY_ESCAPE)) win.request_close();
-      if (win.key_pressed(GLFW_KEY_H)) overlay = !overlay;
-      if (win.key_pressed(GLFW_KEY_G)) view.ghost = !view.ghost;
-      if (win.key_pressed(GLFW_KEY_C)) {
-        camera_index = (camera_index + 1) % 4;
-        orbit.from(camera_preset(cameras[camera_index], w));
-      }
-      // The fight keys: the first one takes over the red boxer (or the --player one) from the AI.
-      if (w.match->active)
-        for (const auto& [key, action] : kFightKeys)
-          if (win.key_pressed(key)) {
-            InputEvent e;
-            e.kind = InputKind::Key;
-            e.action = action;
-            e.boxer = o.player >= 0 ? o.player : 0;
-            interaction_submit(w, e);
-          }
-      // Throws from the camera toward the cursor; Backspace clears them.
-      if (mouse_in && win.key_pressed(GLFW_KEY_T)) interaction_submit(w, throw_from_camera(w, ray, ObjectKind::Ball));
-      if (mouse_in && win.key_pressed(GLFW_KEY_Y)) interaction_submit(w, throw_from_camera(w, ray, ObjectKind::Crate));
-      if (win.key_pressed(GLFW_KEY_BACKSPACE)) {
-        InputEvent e;
-        e.kind = InputKind::Clear;
-        interaction_submit(w, e);
-      }
-      handle_panel_keys(w, view, panel, {[](const void* c, int k) { return static_cast<const eng::platform::Window*>(c)->key_pressed(k); }, &win});
-    }
-    const glm::dvec2 mouse = win.mouse_position();
-    // The left button: grab what is under the cursor, drag it, let go (the panel keeps its own clicks).
-    const bool left = uin.mouse_down[0];
-    const double wheel = uin.wheel_y;
-    if (left && !left_was_down && !ui_mouse && mouse_in) {
-      const bool strong = win.key_down(GLFW_KEY_LEFT_SHIFT) || win.key_down(GLFW_KEY_RIGHT_SHIFT);
-      hands_press(w, hands, ray, cam, strong);
-    } else if (left && hands.held && mouse_in) {
-      hands_drag(w, hands, ray, cam, wheel);
-    } else if (!left && hands.held) {
-      hands_release(w, hands);
-    }
-    left_was_down = left;
-    if (!ui_mouse) {  // drags and the wheel over a panel are the panel's
-      if (win.mouse_button_down(GLFW_MOUSE_BUTTON_RIGHT)) {
-        orbit.yaw -= float(mouse.x - last_mouse.x) * 0.006f;
-        orbit.pitch = std::clamp(orbit.pitch + float(mouse.y - last_mouse.y) * 0.006f, -0.1f, 1.5f);
-      }
-      if (!hands.held) orbit.dist = std::clamp(orbit.dist * std::pow(0.9f, float(win.scroll_delta().y)), 1.0f, 20.0f);
-    }
-    last_mouse = mouse;
-
-    // Fixed 60 Hz simulation frames, as many as real time (scaled by the slow motion) asks for: the simulated clock
-    // keeps up with the wall clock down to 4 rendered frames a second (a frame of two boxers' physics costs about
-    // 1 ms, so the catch-up of 15 frames is 15 ms); below that, at most 0.25 s a frame, the game slows down instead
-    // of spiralling. Paused: only single steps.
-    constexpr double kMaxCatchUp = 0.25;
-    const auto now = clock_type::now();
-    accumulator = std::min(accumulator + time_scale(panel) * std::chrono::duration<double>(now - last).count(), kMaxCatchUp);
-    last = now;
-    if (replay.active || panel.paused) accumulator = 0.0;
-    if (panel.step_once && !replay.active) accumulator = 1.0 / 60.0, panel.step_once = false;
-    while (accumulator >= 1.0 / 60.0) {
-      const auto t0 = clock_type::now();
-      for (int s = 0; s < kStepsPerFrame; ++s) step_world(w);
-      sim.ms.push_back(std::chrono::duration<double, std::milli>(clock_type::now() - t0).count());
-      accumulator -= 1.0 / 60.0;
-      ++frames;
-    }
-    if (o.seconds > 0 && w.data.time >= o.seconds) win.request_close();
-    if (w.match->active) {
-      const int kd = w.match->fighter[0].knockdowns + w.match->fighter[1].knockdowns;
-      if (kd > replay.knockdowns && !replay.active) replay.pending = w.data.time + 1.0, replay.from = w.data.time - 1.5;
-      replay.knockdowns = kd;
-      if (replay.pending >= 0.0 && w.data.time >= replay.pending && w.match->replay.count() > 0) {
-        replay.active = true;
-        replay.pending = -1.0;
-        replay.to = w.data.time;
-        replay.at = std::max(replay.from, w.match->replay.time(0));
-        live_q = w.data.q;
-      }
-    }
-    if (overlay) {
-      char status[160];
-      std::snprintf(status, sizeof status, "t = %.2f s  %s  scenario %s  seed %llu", w.data.time,
-                    panel.paused ? "PAUSED" : time_scale_name(panel), o.scenario.c_str(),
-                    static_cast<unsigned long long>(w.options.seed));
-      // Narrow enough to clear the match panel at 1280 px; the other keys are listed in the control panel.
-      // The HUD shows the frame as the player gets it: from one shown frame to the next.
-      HudStats stats{times.frame.ms.empty() ? 0.0f : float(times.frame.ms.back()), r.device_name(),
-                     {status, "F12 shot  H overlay  C camera  Tab panel  Esc quit"}};
-      draw_stats_panel(stats);
-      draw_control_panel(w, view, panel);
-    }
-    if (overlay && w.match->active) {
-      MatchHud hud = match_hud(w);
-      if (replay.active) hud.banner = "REPLAY";
-      draw_match_panel(hud);
-    }
-    eng::ui::ui_end(r.ui());
-    if (win.minimized()) continue;
-    const auto t1 = clock_type::now();
-    if (replay.active) {  // the recorded coordinates of the replay's moment, then the live ones back
-      const ReplayBuffer& rb = w.match->replay;
-      const int i = rb.at_or_before(replay.at);
-      std::copy(rb.q(i), rb.q(i) + rb.nq(), w.data.q.data());
-      eng::physics::forward_kinematics(w.model, w.data);
-      fill_frame(w, view, f);
-      f.camera = camera_preset("side", w);
-      w.data.q = live_q;
-      eng::physics::forward_kinematics(w.model, w.data);
-      replay.at += 0.35 * ui_dt;
-      if (replay.at > replay.to) replay.active = false;
-    } else {
-      fill_frame(w, view, f);
-      f.camera = cam;
-    }
-    f.overlay = overlay;
-    if (auto ok = r.render(f); !ok) {
-      std::fprintf(stderr, "boxing: rendering failed: %s\n", ok.error().c_str());
-      return 1;
-    }
-    const auto t2 = clock_type::now();
-    render.ms.push_back(std::chrono::duration<double, std::milli>(t2 - t1).count());
-    if (frames_shown++ > 0) times.frame.ms.push_back(std::chrono::duration<double, std::milli>(t2 - last_shown).count());
-    last_shown = t2;
-    times.frame_done();
-    if (win.key_pressed(GLFW_KEY_F12) || (!o.screenshot.empty() && win.should_close())) {
-      std::string path = o.screenshot;
-      if (path.empty() || !win.should_close()) {
-        char name[64];
-        std::snprintf(name, sizeof name, "out/screenshot_%03d.png", ++shots);
-        path = name;
-      }
-      auto img = r.read_back();
-      if (img && save_png(*img, path).ok()) std::printf("boxing: screenshot saved to %s\n", path.c_str());
-      else std::fprintf(stderr, "boxing: screenshot failed\n");
-    }
+  WindowRun s(o, world, **window, **renderer);
+  while (!s.win.should_close()) {
+    restart_if_asked(s);
+    s.win.poll_events();
+    const FrameInput in = begin_ui_frame(s);
+    handle_keys(s, in);
+    handle_mouse(s, in);
+    step_simulation(s);
+    watch_for_replay(s);
+    draw_panels(s);
+    if (s.win.minimized()) continue;
+    if (!render_frame(s, in)) return 1;
+    save_screenshot_if_asked(s);
   }
-  World& w = *world;
-  if (auto ok = write_report(o.report, base_report(o, w, frames, r, times, false)); !ok) {
-    std::fprintf(stderr, "%s\n", ok.error().c_str());
-    return 1;
-  }
-  if (auto ok = write_recording(o, w); !ok) {
-    std::fprintf(stderr, "%s\n", ok.error().c_str());
-    return 1;
-  }
-  if (r.validation_errors() > 0) {
-    std::fprintf(stderr, "boxing: %d Vulkan validation errors (see above)\n", r.validation_errors());
-    return 1;
-  }
-  return 0;
+  return finish_windowed(s);
 }
 
 }  // namespace

@@ -82,6 +82,8 @@ struct Options {
   std::string sheet_dir;
 };
 
+// The flags are one table in cli.cpp (name, value parser with its range or set, help line); help_text, the --help
+// text, is generated from it.
 eng::Result<Options> parse_cli(const std::vector<std::string>& args);
 std::string help_text();
 

@@ -230,8 +230,8 @@ eng::Result<CharacterDesc> load_character(const GltfScene& scene, const std::str
         throw Bad{"node '" + name + "' has a rest rotation; bones must have identity rest rotation"};
       if (glm::length(n.scale - glm::vec3(1.f)) > 1e-5f)
         throw Bad{"node '" + name + "' has a scale; bones must have unit scale"};
-      // A joint offset beyond any body's size is a unit or export mistake (glTF is in metres): a limb 1e30 m away
-      // loaded and simulated without a word before (scripts/bad-input).
+      // A joint offset beyond any body's size is a unit or export mistake (glTF is in metres): it is an error, not a
+      // limb simulated 1e30 m away (scripts/bad-input tries one).
       const Eigen::Vector3d offset(widen(n.translation.x), widen(n.translation.y), widen(n.translation.z));
       if (!(offset.norm() <= kMaxBoneOffset))
         throw Bad{"node '" + name + "' sits " + number_text(offset.norm()) + " m from its parent; a bone's offset must be " +

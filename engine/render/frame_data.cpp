@@ -110,8 +110,8 @@ eng::Result<void> Renderer::Impl::upload_frame(PerFrame& f, const FrameDesc& fra
   if (gpu_instances.empty()) gpu_instances.push_back({});  // keep the bound SSBO non-empty
   // The descriptor set must be rewritten whenever the SSBO was reallocated. Do not detect that by comparing
   // VkBuffer handles: a driver may hand out the just-freed handle again (lavapipe's handles are heap pointers,
-  // so the new buffer often has the old handle's value), which left the set pointing at the destroyed buffer
-  // and crashed lavapipe without the validation layer (whose wrapped handles are always unique).
+  // so the new buffer often has the old handle's value); a set not rewritten then points at the destroyed buffer,
+  // which crashes lavapipe without the validation layer (whose wrapped handles are always unique).
   bool reallocated = false;
   if (auto r = ensure(f.instances, gpu_instances.size() * sizeof(GpuInstance), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, &reallocated); !r)
     return r;

@@ -24,9 +24,8 @@ struct RendererConfig {
   // supports.
   int msaa_samples = 0;
   // The 3D scene's resolution as a share of the target's (per axis), upscaled (bilinear) before the HUD, which stays
-  // sharp. 0 = by device: a CPU rasteriser renders the scene at no more than kCpuScenePixels (at 1280x720: 0.75, the
-  // match's frame 40-41 -> 36-37 ms on lavapipe, docs/decisions/renderer-speed.md; 640x360 and smaller stay native),
-  // a GPU at 1.
+  // sharp. 0 = by device: a CPU rasteriser renders the scene at no more than kCpuScenePixels (at 1280x720: 0.75,
+  // docs/decisions/renderer-speed.md; 640x360 and smaller stay native), a GPU at 1.
   // Any other value is clamped to [0.25, 1].
   double render_scale = 0.0;
   // The sun's shadow map, texels a side. 0 = by device: 1024 on a CPU rasteriser (clearing and filling 2048^2 depth

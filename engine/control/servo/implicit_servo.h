@@ -34,11 +34,11 @@
 // pelvis kept level (the parallelogram ground - leg - pelvis - leg) changes no servoed world orientation except the
 // shanks', so only the ankles' roll resists it, and a 10 cm wide sole takes ~Fn x 5 cm before it rolls onto its
 // edge. A support hip's ROLL (ab/adduction, bone x axis) therefore also keeps the free-bone law (free_roll): the
-// hips then hold the legs' sideways lean against the pelvis (hip strategy: load moves between the legs). Measured
-// (stand, 60 s, seeds 1-5, with the game's balance layer): without it world 8/10, person 5/10 stand; with it 10/10.
+// hips then hold the legs' sideways lean against the pelvis (hip strategy: load moves between the legs); without
+// it the ankles' roll alone holds the sway and the world and person servos let the boxer fall sideways.
 // PLANTED TWIST. The contacts have no torsional friction: a full-strength twist on a planted foot spins it on its
-// crate. The planted ankle's twist (foot z) error is scaled by twist_scale (game: 0.6; 0.3 lets the body creep
-// round on its feet and fall after ~40-60 s; 1.0 was the old value).
+// crate. The planted ankle's twist (foot z) error is scaled by twist_scale (game: 0.6; much less lets the body
+// creep round on its feet until it falls, full strength spins the foot).
 // The game switches a leg to the support law only while its foot touches the ground (boxer.cpp) and aims the
 // leg targets at the actual ankles (stance_ik.h fit_legs_to_ankles) so the two legs agree through the loop.
 #include <Eigen/Core>

@@ -6,7 +6,7 @@
 //
 // Why the boxer needs it: a balance QP that cannot get its com and momentum targets from the ground (a boxer
 // falling in guard, struck by a thrown crate) spins the light arms as reaction wheels; without a limit the gloves
-// whipped at 50-110 rad/s, 31-35 m/s (the chaos soak, issue 19). Punches stay inside the full-strength band.
+// whip round far faster than any punch. Punches stay inside the full-strength band.
 #include <Eigen/Core>
 
 namespace eng::control {
