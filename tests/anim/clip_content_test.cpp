@@ -237,15 +237,28 @@ TEST(ClipContent, NoPopsInsideClips) {
 }
 
 TEST(ClipContent, BodyStaysAboveTheFloor) {
-  // Joint positions stay above the floor (2 cm tolerance; a kneeling fall touches 3 cm at one instant).
+  // No joint centre sinks deeper under the floor than the thinnest limb's radius (the forearm capsule's 5 cm,
+  // content/boxer/boxer.gltf): at that depth the limb still reaches up to the floor, so the tracking body's floor
+  // contact holds it up and the pose is one the physics can come near; deeper, the whole limb would be under the
+  // floor. measured (this test's lines, the content is fixed): every clip's lowest joint at +3.2 cm or higher
+  // (standing clips: the ankles at +7.5-8.0 cm) but fall_forward's, its kneeling left knee at -3.2 cm at t=0.57 s.
+  // (Before: "2 cm" in the comment, 4 cm asserted after that knee's 3 cm was seen, neither with a source.)
+  constexpr double kThinnestLimbRadius = 0.05;  // m, forearm_l / forearm_r
   const Skeleton s = boxer_skeleton();
-  for (const Clip& c : content_clips())
+  for (const Clip& c : content_clips()) {
+    double lowest = std::numeric_limits<double>::infinity(), at = 0.0;
+    int joint = -1;
     for (double t = 0; t <= c.duration(); t += 1.0 / 60) {
       std::vector<Eigen::Vector3d> wp;
       std::vector<Eigen::Quaterniond> wr;
       forward_kinematics(s, sample_clip_pose(c, t), &wp, &wr);
-      for (int i = 0; i < 16; ++i) EXPECT_GT(wp[i].z(), -0.04) << c.name << " " << s.name[i] << " t=" << t;
+      for (int i = 0; i < 16; ++i)
+        if (wp[i].z() < lowest) lowest = wp[i].z(), at = t, joint = i;
     }
+    std::printf("%-16s lowest joint %-12s %+.3f m at t=%.2f s\n", c.name.c_str(), joint >= 0 ? s.name[joint].c_str() : "-",
+                lowest, at);
+    EXPECT_GT(lowest, -kThinnestLimbRadius) << c.name << " " << (joint >= 0 ? s.name[joint] : "") << " t=" << at;
+  }
 }
 
 TEST(ClipContent, SkeletonMatchesBoxerContent) {

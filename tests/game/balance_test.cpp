@@ -1,11 +1,12 @@
 // The boxers' balance end to end (no rendering), the claims of the README's "boxer and inertial servo" and
 // "balance QP" sections: world and person space recover from a 150 N x 0.1 s chest push from every direction with
 // no root help, parent space without the meathook falls unpushed (the paper's baseline), and the balance QP (the
-// default) keeps the boxer up through the punches that floor the PD balance layer. Seed 3 is the stance whose 315 deg push
-// used to floor person space (its rear crate is 12 cm lower than the lead one).
+// default) keeps the boxer up through the punches that floor the PD balance layer. The behaviour is asserted over fixed
+// seed ranges (seed_rate.h): seeds 1-N, each test's N and rate stated, the measurements in docs/decisions/test-bounds.md.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -18,22 +19,47 @@
 #include "game/boxer_stepping.h"
 #include "game/cli.h"
 #include "game/world.h"
+#include "game/seed_rate.h"
 
 namespace {
 
-// Runs a scenario for `seconds` of simulated time, boxer 0's tuning edited first by `tune` when given; returns boxer
-// 0's metrics.
-boxing::BoxerMetrics run(const std::vector<std::string>& args, double seconds,
-                         const std::function<void(boxing::BoxerTuning&)>& tune = {}) {
+// Runs a scenario for `seconds` of simulated time, boxer 0's tuning edited first by `tune` when given; returns every
+// boxer's metrics (boxer 0 first).
+std::vector<boxing::BoxerMetrics> run_all(const std::vector<std::string>& args, double seconds,
+                                          const std::function<void(boxing::BoxerTuning&)>& tune = {}) {
   auto o = boxing::parse_cli(args);
   EXPECT_TRUE(o.ok());
   auto w = boxing::make_world(*o);
   EXPECT_TRUE(w.ok()) << w.error();
+  if (!w.ok()) return {boxing::BoxerMetrics{}};
   boxing::World& world = **w;
   if (tune) tune(world.boxers[0].settings.tuning);
   const int steps = int(seconds / boxing::kPhysicsDt);
   for (int i = 0; i < steps; ++i) boxing::step_world(world);
-  return world.boxers[0].metrics;
+  std::vector<boxing::BoxerMetrics> m;
+  for (const boxing::Boxer& b : world.boxers) m.push_back(b.metrics);
+  return m;
+}
+
+// run_all's boxer 0.
+boxing::BoxerMetrics run(const std::vector<std::string>& args, double seconds,
+                         const std::function<void(boxing::BoxerTuning&)>& tune = {}) {
+  return run_all(args, seconds, tune)[0];
+}
+
+// "fell at 4.2 s (pelvis below half its standing height)", or "" when it stood.
+std::string fell_why(const boxing::BoxerMetrics& m) {
+  if (!m.fell) return "";
+  char s[64];
+  std::snprintf(s, sizeof s, "fell at %.1f s (", m.fell_at);
+  return s + m.fell_reason + ")";
+}
+
+// The boxers of `m` that fell, and why ("" when none did).
+std::string falls(const std::vector<boxing::BoxerMetrics>& m) {
+  seed_rate::Why why;
+  for (size_t k = 0; k < m.size(); ++k) why.check(!m[k].fell, "boxer " + std::to_string(k) + " " + fell_why(m[k]));
+  return why.str();
 }
 
 // The push lab's world for a push of `force` N x 0.2 s at 2 s toward `dir` degrees, steps on, on `seed`.
@@ -72,14 +98,22 @@ void step_while_up(boxing::World& world, double seconds, const std::function<voi
 
 class PushFromEveryDirection : public ::testing::TestWithParam<std::string> {};
 
+// Seeds 1-3, every seed required (a small push, 15 kg m/s: the claim is that it is survived, whatever the stance; seed
+// 3 is the stance whose 315 deg push used to floor person space, its rear crate 12 cm lower than the lead one). A seed
+// passes when all 8 directions stand 5 s (the push at 2 s). measured: 3 of 3 in both spaces.
 TEST_P(PushFromEveryDirection, A150NewtonChestPushIsSurvivedWithNoRootHelp) {
-  for (int dir = 0; dir < 360; dir += 45) {
-    const auto m = run({"--scenario", "push", "--seed", "3", "--servo", GetParam(), "--push-dir", std::to_string(dir),
-                        "--push-force", "150", "--push-duration", "0.1", "--push-at", "2"},
-                       6.0);
-    EXPECT_FALSE(m.fell) << GetParam() << " space, push toward " << dir << " deg: fell at " << m.fell_at << " s ("
-                         << m.fell_reason << ")";
-  }
+  const seed_rate::Rate r =
+      seed_rate::over_seeds(GetParam() + " space, 150 N x 0.1 s from 8 directions", 1, 3, [](int seed) {
+        seed_rate::Why why;
+        for (int dir = 0; dir < 360; dir += 45) {
+          const auto m = run({"--scenario", "push", "--seed", std::to_string(seed), "--servo", GetParam(), "--push-dir",
+                              std::to_string(dir), "--push-force", "150", "--push-duration", "0.1", "--push-at", "2"},
+                             5.0);
+          why.check(!m.fell, "toward " + std::to_string(dir) + " deg " + fell_why(m));
+        }
+        return why.str();
+      });
+  EXPECT_TRUE(r.all());
 }
 
 INSTANTIATE_TEST_SUITE_P(Servo, PushFromEveryDirection, ::testing::Values("world", "person"));
@@ -89,69 +123,99 @@ INSTANTIATE_TEST_SUITE_P(Servo, PushFromEveryDirection, ::testing::Values("world
 // centre of pressure back and forth at the push's 1 Hz. Checks the trace's com, its centre of pressure (summed from
 // the solver's contact forces) and the --push-shape sine force.
 TEST(Push, TheTraceHasTheCentreOfPressureUnderTheComAndFollowsKudohsSine) {
-  auto o = boxing::parse_cli({"--scenario", "push", "--seed", "1", "--stepping", "off", "--push-dir", "180",
-                              "--push-force", "100", "--push-shape", "sine", "--push-duration", "5", "--push-at", "2"});
-  ASSERT_TRUE(o.ok()) << o.error();
-  auto w = boxing::make_world(*o);
-  ASSERT_TRUE(w.ok()) << w.error();
-  boxing::World& world = **w;
-  for (int i = 0; i < int(5.0 / boxing::kPhysicsDt); ++i) boxing::step_world(world);
-  const auto& tr = world.push_trace;
-  ASSERT_GT(tr.size(), 590u);  // 120 Hz
-  // Standing before the push, over two periods of the guard's 0.6 s bounce (the centre of pressure sways +-4 cm about
-  // the com as the balance drives it; on average it is under it).
-  double dx = 0, dy = 0;
-  int n = 0;
-  for (const auto& r : tr)
-    if (r[0] >= 0.8 && r[0] < 2.0) dx += r[3] - r[1], dy += r[4] - r[2], ++n;
-  ASSERT_GT(n, 100);
-  EXPECT_LT(std::abs(dx / n), 0.015);
-  EXPECT_LT(std::abs(dy / n), 0.015);
-  // Under the sine (a push backward in the first half of each second, forward in the second) the centre of pressure
-  // moves back and forth: its mean over the seconds' first halves differs from the second halves' by > 1 cm.
-  double half[2] = {0, 0};
-  int cnt[2] = {0, 0};
-  for (const auto& r : tr) {
-    if (r[0] < 2.0) continue;
-    const int h = std::fmod(r[0] - 2.0, 1.0) < 0.5 ? 0 : 1;
-    half[h] += r[3], ++cnt[h];
-  }
-  ASSERT_GT(cnt[0], 100);
-  ASSERT_GT(cnt[1], 100);
-  EXPECT_GT(std::abs(half[0] / cnt[0] - half[1] / cnt[1]), 0.01);
-  EXPECT_FALSE(world.boxers[0].metrics.fell);
+  // Seeds 1-3, every seed required: the trace's physics, not the stance, makes it pass.
+  const seed_rate::Rate r = seed_rate::over_seeds("sine push trace, 5 s", 1, 3, [](int seed) -> std::string {
+    auto o = boxing::parse_cli({"--scenario", "push", "--seed", std::to_string(seed), "--stepping", "off", "--push-dir",
+                                "180", "--push-force", "100", "--push-shape", "sine", "--push-duration", "5",
+                                "--push-at", "2"});
+    if (!o.ok()) return o.error();
+    auto w = boxing::make_world(*o);
+    if (!w.ok()) return w.error();
+    boxing::World& world = **w;
+    for (int i = 0; i < int(5.0 / boxing::kPhysicsDt); ++i) boxing::step_world(world);
+    const auto& tr = world.push_trace;
+    if (tr.size() <= 590u) return "a trace of " + std::to_string(tr.size()) + " rows, not 120 Hz";
+    // Standing before the push, over two periods of the guard's 0.6 s bounce (the centre of pressure sways +-4 cm
+    // about the com as the balance drives it; on average it is under it).
+    double dx = 0, dy = 0;
+    int n = 0;
+    for (const auto& row : tr)
+      if (row[0] >= 0.8 && row[0] < 2.0) dx += row[3] - row[1], dy += row[4] - row[2], ++n;
+    // Under the sine (a push backward in the first half of each second, forward in the second) the centre of
+    // pressure moves back and forth: its mean over the seconds' first halves differs from the second halves' by > 1 cm.
+    double half[2] = {0, 0};
+    int cnt[2] = {0, 0};
+    for (const auto& row : tr) {
+      if (row[0] < 2.0) continue;
+      const int h = std::fmod(row[0] - 2.0, 1.0) < 0.5 ? 0 : 1;
+      half[h] += row[3], ++cnt[h];
+    }
+    if (n <= 100 || cnt[0] <= 100 || cnt[1] <= 100) return "too few trace rows";
+    seed_rate::Why why;
+    why.check(std::abs(dx / n) < 0.015 && std::abs(dy / n) < 0.015,
+              "centre of pressure off the com on average by " + std::to_string(dx / n) + ", " + std::to_string(dy / n) + " m");
+    const double swing = std::abs(half[0] / cnt[0] - half[1] / cnt[1]);
+    why.check(swing > 0.01, "the centre of pressure moved " + std::to_string(swing) + " m with the sine");
+    why.check(!world.boxers[0].metrics.fell, fell_why(world.boxers[0].metrics));
+    return why.str();
+  });
+  EXPECT_TRUE(r.all());
 }
 
 // Kudoh's 500 N x 0.1 s from behind, in place, with Kudoh's priorities (the fight's balance) and the knees 8 cm
 // deeper: the boxer stays up, the arms it swings to hold the trunk come back to the guard (without the return they
 // stayed 1.6-2.0 rad off on 7 of 8 seeds), and the plain lab balance falls (docs/decisions/balance-steps.md).
 TEST(Push, KudohsPushFromBehindIsSurvivedInPlaceAndTheArmsComeBack) {
-  const std::vector<std::string> push = {"--scenario", "push", "--seed", "1", "--stepping", "off", "--push-dir", "0",
-                                         "--push-force", "500", "--push-duration", "0.1", "--push-at", "2"};
-  auto kudoh = push;
-  for (const char* a : {"--priorities", "kudoh", "--stance-drop", "0.08"}) kudoh.push_back(a);
-  const auto m = run(kudoh, 8.0);
-  EXPECT_FALSE(m.fell) << "fell at " << m.fell_at << " s (" << m.fell_reason << ")";
-  EXPECT_LT(m.arm_error_end, 0.3);   // rad: the upper arms back on their pose
-  EXPECT_LT(m.arm_off_guard_s, 3.0);  // s more than 1.5 rad off: the swing itself, not for good
-  EXPECT_TRUE(run(push, 8.0).fell);   // the lab's own balance (no priorities) goes down
+  // Seeds 1-3, every seed required (in place, a push of the stance's own physics). measured: 3 of 3 (arms 0.01-0.06 rad off at the end, 0.5-0.6 s
+  // off the guard; the plain balance down at 3.2-3.3 s on each).
+  const seed_rate::Rate r = seed_rate::over_seeds("Kudoh's 500 N from behind, 8 s", 1, 3, [](int seed) {
+    const std::vector<std::string> push = {"--scenario", "push", "--seed", std::to_string(seed), "--stepping", "off",
+                                           "--push-dir", "0", "--push-force", "500", "--push-duration", "0.1",
+                                           "--push-at", "2"};
+    auto kudoh = push;
+    for (const char* a : {"--priorities", "kudoh", "--stance-drop", "0.08"}) kudoh.push_back(a);
+    const auto m = run(kudoh, 8.0);
+    seed_rate::Why why;
+    why.check(!m.fell, fell_why(m));
+    why.check(m.arm_error_end < 0.3, "upper arms " + std::to_string(m.arm_error_end) + " rad off their pose at the end");
+    why.check(m.arm_off_guard_s < 3.0, "arms off the guard " + std::to_string(m.arm_off_guard_s) + " s");  // the swing
+    why.check(run(push, 8.0).fell, "the lab's own balance (no priorities) stood");  // ... goes down
+    return why.str();
+  });
+  EXPECT_TRUE(r.all());
 }
 
 TEST(Push, SixTimesThatImpulseFloorsTheBoxer) {
   // The same scenario is not a pass by construction: 900 N x 0.1 s (90 kg m/s) from behind knocks the boxer down in
-  // place. (With the push lab's balance steps it staggers on for seconds: the BalanceSteps tests.)
-  const auto m = run({"--scenario", "push", "--seed", "3", "--servo", "world", "--push-dir", "0", "--push-force", "900",
-                      "--push-duration", "0.1", "--push-at", "2", "--stepping", "off"},
-                     6.0);
-  EXPECT_TRUE(m.fell);
-  EXPECT_GT(m.fell_at, 2.0) << "it stood until the push";
+  // place. (With the push lab's balance steps it staggers on for seconds: the BalanceSteps tests.) Seeds 1-3, every
+  // seed required. And a fallen boxer goes limp and stays bounded: the QP's torques on a lying body once made the
+  // limbs flail and the simulation diverge (com speed 1e129 m/s on walk seed 3); a fall is ~3.4 m/s, bound 6 m/s.
+  // measured: 3 of 3, down at 2.8 s, the com
+  // at most 2.3-3.0 m/s.
+  const seed_rate::Rate r = seed_rate::over_seeds("900 N x 0.1 s from behind, in place, 8 s", 1, 3, [](int seed) {
+    const auto m = run({"--scenario", "push", "--seed", std::to_string(seed), "--servo", "world", "--push-dir", "0",
+                        "--push-force", "900", "--push-duration", "0.1", "--push-at", "2", "--stepping", "off"},
+                       8.0);
+    seed_rate::Why why;
+    why.check(m.fell, "stood");
+    why.check(!m.fell || m.fell_at > 2.0, "fell before the push, " + fell_why(m));
+    why.check(m.max_com_speed < 6.0, "com at " + std::to_string(m.max_com_speed) + " m/s");
+    return why.str();
+  });
+  EXPECT_TRUE(r.all());
 }
 
 TEST(ParentSpace, WithoutTheMeathookTheBoxerFallsUnpushed) {
-  const auto m = run({"--scenario", "stand", "--seed", "3", "--servo", "parent"}, 4.0);
-  EXPECT_TRUE(m.fell) << "parent-space PD alone cannot hold the body up (the paper's baseline)";
-  const auto h = run({"--scenario", "stand", "--seed", "3", "--servo", "parent-meathook"}, 4.0);
-  EXPECT_FALSE(h.fell) << "the meathook's artificial support holds it";
+  // Seeds 1-3, every seed required. measured: 3 of 3 (parent space down at 1.2-1.3 s).
+  const seed_rate::Rate r = seed_rate::over_seeds("parent space, standing 4 s", 1, 3, [](int seed) {
+    seed_rate::Why why;
+    const auto m = run({"--scenario", "stand", "--seed", std::to_string(seed), "--servo", "parent"}, 4.0);
+    why.check(m.fell, "parent-space PD alone held the body up (the paper's baseline falls)");
+    const auto h = run({"--scenario", "stand", "--seed", std::to_string(seed), "--servo", "parent-meathook"}, 4.0);
+    why.check(!h.fell, "with the meathook's artificial support " + fell_why(h));
+    return why.str();
+  });
+  EXPECT_TRUE(r.all());
 }
 
 TEST(Drill, AnUnknownClipNameIsAClearError) {
@@ -162,75 +226,116 @@ TEST(Drill, AnUnknownClipNameIsAClearError) {
   EXPECT_NE(w.error().find("'haymaker' is not a clip"), std::string::npos) << w.error();
 }
 
-TEST(Drill, ADefensiveClipPlayedEveryThreeSecondsKeepsTheBoxerUp) {
-  // block_high moves the arms and trunk, not the root: the drill of it stands (see README for the clips that don't).
-  const auto m = run({"--scenario", "stand", "--seed", "2", "--clip", "block_high"}, 10.0);
-  EXPECT_FALSE(m.fell) << "fell at " << m.fell_at << " s (" << m.fell_reason << ")";
+// A drill of one clip (stand, the clip played every 3 s: three plays in 10 s), both boxers of the stand scenario, seeds
+// 1-4 (a seed passes when both stand). The balance QP keeps the centre of pressure in the feet through the punches'
+// lunges (the jab's 5 cm with the arm thrown forward floors the PD balance layer: the next test), and block_high moves
+// the arms and trunk, not the root. measured: every clip here 10 of seeds 1-10 (20 of 20 boxers), combo_jab_cross
+// too (it held 12 of 16 boxers on seeds 1-8 in the deeper stance before, README "Stance and steps on the crates");
+// bound 3 of 4: one seed of four may move with a last-bit difference between machines (docs/decisions/test-bounds.md).
+class DrillOfOneClip : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(DrillOfOneClip, TheBalanceQpKeepsBothBoxersUpOnSeeds1To4) {
+  const std::string clip = GetParam();
+  const seed_rate::Rate r = seed_rate::over_seeds(clip + " drill, QP, 10 s", 1, 4, [&](int seed) {
+    return falls(run_all({"--scenario", "stand", "--seed", std::to_string(seed), "--clip", clip}, 10.0));
+  });
+  EXPECT_TRUE(r.at_least(3));
 }
 
-TEST(Drill, TheBalanceQpKeepsThePunchesUpWhereThePdBalanceLayerFalls) {
-  // The jab's 5 cm lunge with the arm thrown forward floors the PD balance layer (README: the drill's diagnosis);
-  // the QP keeps the centre of pressure in the feet. Seed 2: the PD layer loses both boxers by 7.2 s.
-  const auto pd = run({"--scenario", "stand", "--seed", "2", "--clip", "jab", "--balance", "pd"}, 10.0);
-  EXPECT_TRUE(pd.fell) << "the baseline should fall here (otherwise this test shows nothing)";
-  // (The jab-cross drill is no longer in the list: in the deeper stance it holds 12 of 16 boxers on seeds 1-8, both
-  // of seed 2's among the falls; README, "Stance and steps on the crates".)
-  for (const char* clip : {"jab", "cross", "lead_uppercut", "duck"}) {
-    const auto qp = run({"--scenario", "stand", "--seed", "2", "--clip", clip}, 10.0);
-    EXPECT_FALSE(qp.fell) << clip << ": fell at " << qp.fell_at << " s (" << qp.fell_reason << ")";
-  }
+INSTANTIATE_TEST_SUITE_P(Clip, DrillOfOneClip,
+                         ::testing::Values("jab", "cross", "lead_uppercut", "duck", "combo_jab_cross", "block_high"));
+
+TEST(Drill, ThePdBalanceLayerFallsInTheJabDrill) {
+  // The baseline the drills above are measured against (otherwise they show nothing): the PD balance layer (--balance
+  // pd) loses a boxer of the jab drill on a seed (a seed passes when a boxer falls, 4.7-8.9 s). measured: 6 of seeds
+  // 1-10 (11 of 20 boxers), 3 of seeds 1-4; bound 2 of 4: one seed of four may move.
+  const seed_rate::Rate r = seed_rate::over_seeds("jab drill, PD layer, 10 s: a boxer falls", 1, 4, [](int seed) {
+    const auto m = run_all({"--scenario", "stand", "--seed", std::to_string(seed), "--clip", "jab", "--balance", "pd"},
+                           10.0);
+    return falls(m).empty() ? std::string("both boxers stood") : std::string();
+  });
+  EXPECT_TRUE(r.at_least(2));
 }
 
 TEST(Drill, TheClipsQuickStepsLiftOffOnlyWhenTheBodyIsCapturableOnceTheFootLands) {
   // The step_forward drill floored 13 of 16 boxers on seeds 1-8 when the clip lifted the foot on its own schedule
   // (README, "The walk"); gated on the capture point over the stance foot, every one of its steps was held down (the
   // capture point 12-26 cm from the stance foot at lift-off). Gated on the capture point at the touch-down lying in
-  // the new support (lift_off_gate.h, quick steps), none is held down and seed 2's boxer stands through the three
+  // the new support (lift_off_gate.h, quick steps), none is held down and the boxer stands through the three
   // plays, the feet carried forward (a shuffle: the soles drag on their tops, 22% of the clip's 15 cm on seeds 1-8).
   // Each play lifts the lead foot, then the rear: 6 steps, of which 2 are not taken since the carried steps land where
   // planned (stop 57): their landing, relative to the other foot, is within 2 cm of where the foot already stands.
-  const auto m = run({"--scenario", "stand", "--seed", "2", "--clip", "step_forward"}, 10.0);
-  EXPECT_FALSE(m.fell) << "fell at " << m.fell_at << " s (" << m.fell_reason << ")";
-  EXPECT_EQ(m.steps_taken + m.steps_in_place, 6);
-  EXPECT_GE(m.steps_taken, 4);
-  EXPECT_EQ(m.steps_skipped, 0);
-  ASSERT_EQ(m.step_travel_count, m.steps_taken);
-  EXPECT_GT(m.step_travel_sum / m.step_travel_count, 0.1);  // forward, not left behind
+  // Seeds 1-4, 10 s (a seed passes when the boxer stands, no step is skipped, and the steps taken go forward).
+  // measured (seeds 1-10): all stand, none skipped, 1-4 steps taken and 1-4 not taken (their landing where the foot
+  // stood; 6 plays' steps in all on 7 seeds, 3-5 on the others, a step still held at 10 s); bound 3 of 4: one seed
+  // of four may move with a last-bit difference between machines.
+  const seed_rate::Rate r = seed_rate::over_seeds("step_forward drill, 10 s", 1, 4, [](int seed) {
+    const auto m = run({"--scenario", "stand", "--seed", std::to_string(seed), "--clip", "step_forward"}, 10.0);
+    seed_rate::Why why;
+    why.check(!m.fell, fell_why(m));
+    why.check(m.steps_skipped == 0, std::to_string(m.steps_skipped) + " steps skipped");
+    why.check(m.steps_taken + m.steps_in_place <= 6, std::to_string(m.steps_taken + m.steps_in_place) + " steps of 6");
+    why.check(m.steps_taken >= 1 && m.step_travel_count == m.steps_taken, "no step taken, or travel not counted");
+    why.check(m.step_travel_count == 0 || m.step_travel_sum / m.step_travel_count > 0.1,
+              "steps left behind: " + std::to_string(m.step_travel_sum / std::max(1, m.step_travel_count)) + " m");
+    return why.str();
+  });
+  EXPECT_TRUE(r.at_least(3));
 }
 
 TEST(GraphWalk, TheWalkStandsOnTheRootAssistWithinItsLimit) {
-  // Walk seed 7 fell at 3.5 s before the lift-off gating and the root assist (README); now it stands, the assist
-  // (the paper's torque-limited root spring, on by default for the walk) never above its 400 N m.
-  const auto m = run({"--scenario", "graph-walk", "--seed", "7"}, 20.0);
-  EXPECT_FALSE(m.fell) << "fell at " << m.fell_at << " s (" << m.fell_reason << ")";
-  EXPECT_GT(m.root_torque_peak, 1.0);  // it is used ...
-  EXPECT_LE(m.root_torque_peak, 400.0 + 1e-6);  // ... within its limit
-  // The footwork clips' steps lift off as quick steps (10 of the 11 asked for in 20 s; the other, a 3 cm heel lift
-  // of a punch, too short to swing, is held down).
-  EXPECT_GE(m.steps_taken, 5);
-  EXPECT_GT(m.steps_taken, m.steps_skipped);
-  // ... and cost the assist nothing: during a quick step's swing the plan's com falls toward the landing foot as the
-  // inverted pendulum does (qp_balance.cpp); held over the stance foot instead the plan bought the com's acceleration
-  // from the assist (rms 70 N m here against 29).
-  ASSERT_GT(m.time_upright, 0.0);
-  EXPECT_LT(std::sqrt(m.root_torque_sq_dt / m.time_upright), 45.0);
+  // Walk seed 7 fell at 3.5 s before the lift-off gating and the root assist (README); now the walk stands, the assist
+  // (the paper's torque-limited root spring, on by default for the walk) never above its 400 N m. The footwork clips'
+  // steps lift off as quick steps (a 3 cm heel lift of a punch, too short to swing, is held down) and cost the assist
+  // nothing: during a quick step's swing the plan's com falls toward the landing foot as the inverted pendulum does
+  // (qp_balance.cpp); held over the stance foot instead the plan bought the com's acceleration from the assist (rms
+  // 70 N m on seed 7 against 29). Seeds 1-3, 20 s. measured (seeds 1-6, the CLI's report): all stand, 4-11 steps
+  // taken, 1-4 held down, more taken than held on each; here, seeds 1-3: the assist's peak 186-270 N m, its rms 14.5-29.6
+  // (the bound 45 N m lies between the quick steps' 29 and the held plan's 70 on seed 7), 8-9 steps taken, 1-4 held
+  // down. bound 2 of 3: one seed of three may move.
+  const seed_rate::Rate r = seed_rate::over_seeds("graph walk 20 s", 1, 3, [](int seed) {
+    const auto m = run({"--scenario", "graph-walk", "--seed", std::to_string(seed)}, 20.0);
+    const double rms = m.time_upright > 0.0 ? std::sqrt(m.root_torque_sq_dt / m.time_upright) : 0.0;
+    std::printf("  seed %d: assist peak %.0f N m, rms %.1f N m; steps %d taken, %d held down\n", seed,
+                m.root_torque_peak, rms, m.steps_taken, m.steps_skipped);
+    seed_rate::Why why;
+    why.check(!m.fell, fell_why(m));
+    why.check(m.root_torque_peak > 1.0, "the assist unused");  // it is used ...
+    why.check(m.root_torque_peak <= 400.0 + 1e-6, "the assist over its limit");  // ... within its limit
+    why.check(m.steps_taken >= 4 && m.steps_taken > m.steps_skipped,
+              std::to_string(m.steps_taken) + " steps taken, " + std::to_string(m.steps_skipped) + " held down");
+    why.check(rms < 45.0, "the assist's rms " + std::to_string(rms) + " N m");
+    return why.str();
+  });
+  EXPECT_TRUE(r.at_least(2));
 }
 
 TEST(Drill, AClipsOwnLungeIsGivenByTheSolesNotBoughtFromTheRootAssist) {
   // The rear uppercut drill with the root spring on (as the match's boxers fight): asked for the clip's whole com
   // acceleration, its centre of pressure past the soles, the plan bought the rest from the assist (rms 34 N m);
   // asked only for what the soles give (BalanceQpTuning::com_acc_in_support), 8 N m, and the boxer stands.
-  const std::vector<std::string> args = {"--scenario", "stand", "--seed", "1", "--clip", "rear_uppercut", "--root-spring", "on"};
-  const auto rms = [](const boxing::BoxerMetrics& m) { return std::sqrt(m.root_torque_sq_dt / m.time_upright); };
-  const auto whole = run(args, 12.0, [](boxing::BoxerTuning& t) { t.qp.com_acc_in_support = false; });
-  const auto soles = run(args, 12.0);
-  ASSERT_FALSE(whole.fell);
-  ASSERT_FALSE(soles.fell) << "fell at " << soles.fell_at << " s (" << soles.fell_reason << ")";
-  ASSERT_GT(whole.time_upright, 0.0);
-  EXPECT_GT(rms(whole), 20.0);  // the assist did carry the lunge before (otherwise this test shows nothing)
-  EXPECT_LT(rms(soles), 0.5 * rms(whole));
+  // Seeds 1-3, every seed required (measured: 3 of 3, the assist's rms 31.5-33.5 N m asked for the whole, 7.0-8.4
+  // asked for the soles').
+  const seed_rate::Rate r = seed_rate::over_seeds("rear_uppercut drill, root spring on, 12 s", 1, 3, [](int seed) {
+    const std::vector<std::string> args = {"--scenario", "stand", "--seed", std::to_string(seed), "--clip",
+                                           "rear_uppercut", "--root-spring", "on"};
+    const auto rms = [](const boxing::BoxerMetrics& m) { return std::sqrt(m.root_torque_sq_dt / m.time_upright); };
+    const auto whole = run(args, 12.0, [](boxing::BoxerTuning& t) { t.qp.com_acc_in_support = false; });
+    const auto soles = run(args, 12.0);
+    std::printf("  seed %d: the assist's rms %.1f N m (whole com acceleration), %.1f N m (the soles')\n", seed,
+                rms(whole), rms(soles));
+    seed_rate::Why why;
+    why.check(!whole.fell && whole.time_upright > 0.0, "whole: " + fell_why(whole));
+    why.check(!soles.fell, "soles: " + fell_why(soles));
+    // the assist did carry the lunge before (otherwise this test shows nothing)
+    why.check(rms(whole) > 20.0, "whole: the assist's rms " + std::to_string(rms(whole)) + " N m");
+    why.check(rms(soles) < 0.5 * rms(whole), "soles: the assist's rms " + std::to_string(rms(soles)) + " N m");
+    return why.str();
+  });
+  EXPECT_TRUE(r.all());
 }
 
+// (Still a situation found on one seed, not yet brought about directly: docs/decisions/test-bounds.md, "Left".)
 TEST(GraphWalk, CarriedFootworkMovesTheFeetWhereTheShuffleDragsThem) {
   // --footwork carry (the default; step_planner.h): the clips' steps swing on their own path to where the clip puts
   // the foot relative to the stance foot. Walk seed 10, 20 s: the shuffle's pressed soles cover 26% of the clips'
@@ -250,6 +355,7 @@ TEST(GraphWalk, CarriedFootworkMovesTheFeetWhereTheShuffleDragsThem) {
   EXPECT_LT(std::sqrt(carried.root_torque_sq_dt / carried.time_upright), 45.0);
 }
 
+// (Still a situation found on one seed, not yet brought about directly: docs/decisions/test-bounds.md, "Left".)
 TEST(GraphWalk, ACarriedStepWhoseLandingIsWhereTheFootStandsIsNotTaken) {
   // The carried landing is relative to the stance foot; when the feet already stand as the clip ends, it is where the
   // foot is, and the foot was lifted and put back within 2 cm (a boxer marking time: 40% of the walks' clip steps).
@@ -266,6 +372,7 @@ TEST(GraphWalk, ACarriedStepWhoseLandingIsWhereTheFootStandsIsNotTaken) {
   EXPECT_GE(m.step_travel_count, 3);  // the steps that go somewhere are still taken
 }
 
+// (Still a situation found on one seed, not yet brought about directly: docs/decisions/test-bounds.md, "Left".)
 TEST(Drill, ACarriedStepHeldForItsWeightShiftIsStillTheClipsWholeStep) {
   // The gate holds a carried step down until the capture point allows it (the weight shift) while the clip plays on.
   // Judged by what was left of the clip's step when it opened, a step_forward rear step kept a few cm of its 16 and a
@@ -282,32 +389,9 @@ TEST(Drill, ACarriedStepHeldForItsWeightShiftIsStillTheClipsWholeStep) {
   EXPECT_FALSE(m.fell) << "fell at " << m.fell_at << " s (" << m.fell_reason << ")";
 }
 
-TEST(Fall, AFallenBoxerGoesLimpAndStaysBounded) {
-  // The QP's torques on a lying body once made the limbs flail and the simulation diverge (com speed 1e129 m/s on
-  // walk seed 3); a fallen boxer now goes limp. Bounded: a fall is ~3.4 m/s. Floored by a 900 N push from behind
-  // (the walk, with lift-off gating and its root assist, no longer falls within seconds to test this on), in place
-  // (with balance steps the boxer steps out of it on this seed).
-  const auto m = run({"--scenario", "push", "--seed", "3", "--push-dir", "0", "--push-force", "900", "--push-duration",
-                      "0.1", "--push-at", "2", "--stepping", "off"},
-                     8.0);
-  EXPECT_TRUE(m.fell);
-  EXPECT_LT(m.max_com_speed, 6.0);
-}
-
 }  // namespace
 
 namespace {
-
-// A push at the chest with balance steps on (the push lab's protocol), stepped out of: at least min_steps balance
-// steps taken and the boxer up at the end.
-void expect_stepped_out_of(const char* seed, const char* dir, const char* force, const char* duration, double seconds,
-                           int min_steps) {
-  const auto m = run({"--scenario", "push", "--seed", seed, "--push-dir", dir, "--push-force", force, "--push-duration",
-                      duration, "--push-at", "2", "--stepping", "on"},
-                     seconds);
-  EXPECT_GE(m.balance_steps, min_steps) << "seed " << seed;
-  EXPECT_FALSE(m.fell) << "seed " << seed << ": fell at " << m.fell_at << " s (" << m.fell_reason << ")";
-}
 
 TEST(BalanceSteps, APushCarryingTheCapturePointOutIsMetWithAStepWhereInPlaceFalls) {
   // 400 N x 0.2 s from behind (80 kg m/s, 1.07 m/s of com velocity), seeds 1-3: in place the boxer falls; with
@@ -329,123 +413,134 @@ TEST(BalanceSteps, APushCarryingTheCapturePointOutIsMetWithAStepWhereInPlaceFall
 }
 
 TEST(BalanceSteps, APushTheRootAssistHoldsInPlaceTakesNoStep) {
-  // 413 N x 0.2 s from behind, seed 1: with no root help the capture point leaves the feet and the boxer steps; with
-  // the root spring's assist (400 N m: its moment moves the pivot up to 0.54 m past the feet, half of that counted,
+  // 413 N x 0.2 s from behind: with no root help the capture point leaves the feet and the boxer steps; with the root
+  // spring's assist (400 N m: its moment moves the pivot up to 0.54 m past the feet, half of that counted,
   // BalanceStepTuning::assist_reach_share) the same push is held in place, the assist at 200-400 N m, and no step is
-  // taken (the match's boxers, who fight with the assist, step only for what it cannot hold).
-  auto with = [](const char* root_spring) {
-    return run({"--scenario", "push", "--seed", "1", "--push-dir", "0", "--push-force", "413", "--push-duration", "0.2",
-                "--push-at", "2", "--stepping", "on", "--root-spring", root_spring},
-               6.0);
-  };
-  const auto bare = with("off");
-  EXPECT_GE(bare.balance_steps, 1);
-  EXPECT_FALSE(bare.fell) << "fell at " << bare.fell_at << " s (" << bare.fell_reason << ")";
-  const auto assisted = with("on");
-  EXPECT_EQ(assisted.balance_steps, 0);
-  EXPECT_FALSE(assisted.fell) << "fell at " << assisted.fell_at << " s (" << assisted.fell_reason << ")";
-  EXPECT_GT(assisted.root_torque_peak, 200.0);
+  // taken (the match's boxers, who fight with the assist, step only for what it cannot hold). Seeds 1-3, every seed
+  // required (measured: 3 of 3; 1-4 steps bare, none assisted).
+  const seed_rate::Rate r = seed_rate::over_seeds("413 N from behind, root assist off / on, 6 s", 1, 3, [](int seed) {
+    auto with = [seed](const char* root_spring) {
+      return run({"--scenario", "push", "--seed", std::to_string(seed), "--push-dir", "0", "--push-force", "413",
+                  "--push-duration", "0.2", "--push-at", "2", "--stepping", "on", "--root-spring", root_spring},
+                 6.0);
+    };
+    const auto bare = with("off"), assisted = with("on");
+    seed_rate::Why why;
+    why.check(bare.balance_steps >= 1, "bare: no step");
+    why.check(!bare.fell, "bare: " + fell_why(bare));
+    why.check(assisted.balance_steps == 0, "assisted: " + std::to_string(assisted.balance_steps) + " steps");
+    why.check(!assisted.fell, "assisted: " + fell_why(assisted));
+    why.check(assisted.root_torque_peak > 200.0, "assisted: the assist peaked at " +
+                                                     std::to_string(assisted.root_torque_peak) + " N m");
+    return why.str();
+  });
+  EXPECT_TRUE(r.all());
 }
 
-TEST(BalanceSteps, YinsForwardSidewaysLeftAndBackwardBarsAreSteppedOutOfOnSeeds1To3) {
-  // Yin & van de Panne's com velocities for a 75 kg body, 0.2 s at the chest: forward 1.1 m/s (413 N), to the left
-  // 1.05 m/s (394 N), backward 0.8 m/s (300 N). Survived with steps on seeds 1-3 (to the right: the next test). The forward push's step swaps the feet into a stance the boxer can fight from: it stays in it
-  // rather than take a long return step back.
-  struct Push { const char* dir; const char* force; };
-  for (const Push& p : {Push{"0", "413"}, Push{"90", "394"}, Push{"180", "300"}})
-    for (const char* seed : {"1", "2", "3"}) {
-      const auto m = run({"--scenario", "push", "--seed", seed, "--push-dir", p.dir, "--push-force", p.force,
-                          "--push-duration", "0.2", "--push-at", "2", "--stepping", "on"},
-                         7.0);
-      EXPECT_FALSE(m.fell) << p.dir << " deg, seed " << seed << ": fell at " << m.fell_at << " s (" << m.fell_reason << ")";
-      if (std::string(p.dir) == "0" && std::string(seed) == "1") {
-        EXPECT_GE(m.balance_steps, 1);
-        EXPECT_EQ(m.return_steps, 0);
-      }
-    }
+// Yin & van de Panne's bars for a 75 kg body, 0.2 s at the chest (com velocities: forward 1.1 m/s = 413 N, to the left
+// 1.05 m/s = 394 N, backward 0.8 m/s = 300 N, to the right as to the left), and Yin's sideways momentum (79 kg m/s)
+// as 197 N for 0.4 s to the right, stepped out of with balance steps (the push lab's default), seeds 1-8, 6 s (the
+// falls come 1.1-2.8 s after the push). A seed passes when the boxer steps (at least one balance step), stands, and
+// every step comes down on a top (no late landing: the com comes down for a swing leg below its reach,
+// BalanceStepTuning::reach_share; found on right 394 N seeds 11, 36, 46 and left 394 N seed 44).
+// The history behind them: to the right (toward the rear foot) the lead foot crosses over, the rear follows, toward
+// the platform's edge 1 m away (seeds 1-8 stood 3, 5, 8, 7 of 8 through the rounds of docs/decisions/balance-steps.md);
+// to the left the rear foot crosses behind and the com can creep out of a 0.6-0.9 m diagonal stance, stepped out of
+// by the foot farther from the capture point (stepping_foot); the longer push's landing is re-planned while the push
+// observer still reads the push (seeds 1-48: 127 of 144 such pushes stood across forward, left and right, 109
+// before; seventh round). measured and bounds: each bar's line (seeds 1-8; 1-16 in docs/decisions/test-bounds.md);
+// a bound one seed under the measured rate: one seed of eight may move with a last-bit difference between machines.
+struct YinPush {
+  const char* name;
+  const char* dir;
+  const char* force;
+  const char* duration;
+  int min_steps;  // balance steps a seed must take (the backward bar is held in place: none on seeds 1-8)
+  int need;       // of seeds 1-8
+};
+
+class YinsBars : public ::testing::TestWithParam<YinPush> {};
+
+TEST_P(YinsBars, AreSteppedOutOfOnSeeds1To8) {
+  const YinPush& p = GetParam();
+  const seed_rate::Rate r = seed_rate::over_seeds(std::string(p.name) + " push, 6 s", 1, 8, [&](int seed) {
+    const auto m = run({"--scenario", "push", "--seed", std::to_string(seed), "--push-dir", p.dir, "--push-force",
+                        p.force, "--push-duration", p.duration, "--push-at", "2", "--stepping", "on"},
+                       6.0);
+    seed_rate::Why why;
+    why.check(!m.fell, fell_why(m));
+    why.check(m.balance_steps >= p.min_steps, std::to_string(m.balance_steps) + " balance steps");
+    // Forward, the step swaps the feet into a stance the boxer can fight from: a one-step recovery stays in it
+    // rather than take a long return step back (seeds 1, 3, 4, 6, 8; two steps and a return on 2, 5, 7).
+    if (std::string(p.dir) == "0" && m.balance_steps == 1) why.check(m.return_steps == 0, "a return step after one");
+    why.check(m.late_landings == 0, std::to_string(m.late_landings) + " late landings");
+    return why.str();
+  });
+  EXPECT_TRUE(r.at_least(p.need));
 }
 
-TEST(BalanceSteps, YinsPushToTheRightIsSteppedOutOfWhereTheStepsLandClearOfHigherTops) {
-  // 394 N x 0.2 s to the right (1.05 m/s; Yin's sideways bar), toward the rear foot: the lead foot crosses over, the
-  // rear follows, toward the platform's edge 1 m away. Seeds 1-8 survive 7 on the machine the README was measured on
-  // (3 before the crossing steps' landings were kept clear of higher tops, the com let fall as the LIP during the
-  // swing, and a cross-over put ahead or behind the stance foot where the capture point is; 5 before a swing brushing
-  // a crate's side stopped counting as its landing; 8 before the farther foot stepped at a crawl, which moved seed 7
-  // off the platform's side). The five asserted here stood through all of those rounds: the recoveries are chaotic
-  // enough that a last-bit difference between machines moves a seed or two.
-  for (const char* seed : {"1", "3", "4", "6", "8"}) expect_stepped_out_of(seed, "270", "394", "0.2", 7.0, 1);
-}
-
-TEST(BalanceSteps, ACapturePointCreepingOutOfALongDiagonalStanceIsSteppedOutOfByTheFootFartherFromIt) {
-  // 394 N x 0.2 s to the left, seeds 5 and 16: the rear foot crosses behind and the com all but stops over a stance
-  // 0.6-0.9 m long, then creeps out across it (0.1-0.2 m/s). The second step lifted the foot nearer the capture point
-  // (Yin's rule, read from a crawling com's direction), the swing over the far foot threw the com at 1 m/s, and the
-  // steps after it ran the boxer off the platform (seed 16) or down onto it (seed 5). The foot farther from the
-  // capture point steps now (stepping_foot) and seed 5 stands. (Seed 16 stood too until the com was lowered for a
-  // step down, balance_step.h reach_share: now it falls at 3.1 s, after its second step, before any crawl.)
-  expect_stepped_out_of("5", "90", "394", "0.2", 8.0, 2);
-}
-
-TEST(BalanceSteps, AStepBelowTheSwingLegsReachLowersTheComAndLandsOnItsTop) {
-  // A crossing or side step onto a crate lower than the stance foot's, 0.4-0.6 m out: with the com held at the
-  // clip's height the straight swing leg hung 5-12 cm over the landing's top until the swing's time ran out, and the
-  // body fell onto it (right 394 N, seeds 11, 36 and 46; left 394 N, seed 44). Now the com comes down for the leg to
-  // reach (BalanceStepTuning::reach_share): every step touches down on a top and the boxer stands.
-  for (const auto& [dir, seed] : {std::pair{"270", "11"}, {"270", "36"}, {"270", "46"}, {"90", "44"}}) {
-    const auto m = run({"--scenario", "push", "--seed", seed, "--push-dir", dir, "--push-force", "394", "--push-duration",
-                        "0.2", "--push-at", "2", "--stepping", "on"},
-                       8.0);
-    EXPECT_GE(m.balance_steps, 1) << dir << " seed " << seed;
-    EXPECT_EQ(m.late_landings, 0) << dir << " seed " << seed;
-    EXPECT_FALSE(m.fell) << dir << " seed " << seed << ": fell at " << m.fell_at << " s (" << m.fell_reason << ")";
-  }
-}
+INSTANTIATE_TEST_SUITE_P(
+    Push, YinsBars,
+    ::testing::Values(YinPush{"forward 413 N", "0", "413", "0.2", 1, 7},        // measured 8/8
+                      YinPush{"left 394 N", "90", "394", "0.2", 1, 7},          // measured 8/8 (15 of 1-16)
+                      YinPush{"backward 300 N", "180", "300", "0.2", 0, 7},      // measured 8/8
+                      YinPush{"right 394 N", "270", "394", "0.2", 1, 7},        // measured 8/8 (15 of 1-16)
+                      YinPush{"right 197 N x 0.4 s", "270", "197", "0.4", 1, 5}),  // measured 6/8 (13 of 1-16)
+    [](const ::testing::TestParamInfo<YinPush>& i) {
+      std::string n;
+      for (const char c : std::string(i.param.name)) n += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+      return n;
+    });
 
 TEST(BalanceSteps, ThePushObserverReadsTheChestPushAsItsForceOverTheMass) {
   // observe_push (after each physics step): the com's horizontal acceleration less what the ground's contact forces
   // give it. A 394 N push to the right for 0.2 s on the 75 kg boxer accelerates it at 5.25 m/s^2, which the ground's
   // forces do not explain; standing before it and after it, the ground explains all of it.
-  auto o = boxing::parse_cli({"--scenario", "push", "--seed", "1", "--push-dir", "270", "--push-force", "394",
-                              "--push-duration", "0.2", "--push-at", "2", "--stepping", "on"});
-  ASSERT_TRUE(o.ok()) << o.error();
-  auto w = boxing::make_world(*o);
-  ASSERT_TRUE(w.ok()) << w.error();
-  boxing::World& world = **w;
-  const boxing::Boxer& b = world.boxers[0];
-  const double expected = 394.0 / b.control_body.total_mass;
-  double before = 0.0, during_min = 1e9, during_max = 0.0, after_sum = 0.0;
-  Eigen::Vector2d during_sum = Eigen::Vector2d::Zero();
-  int n = 0, after_n = 0, after_over = 0;
-  while (world.data.time < 4.0) {
-    boxing::step_world(world);
-    const Eigen::Vector2d a = b.ctl.balance_steps.push_acc;
-    const double t = world.data.time;
-    if (t > 1.0 && t < 2.0) before = std::max(before, a.norm());
-    if (t > 2.05 && t < 2.2) {  // past the filter's rise (10 ms)
-      during_min = std::min(during_min, a.norm()), during_max = std::max(during_max, a.norm());
-      during_sum += a, ++n;
+  // Seeds 1-3, every seed required (the observer's arithmetic, not the stance, makes it pass). measured (seeds 1-10):
+  // before it at most 0.03 m/s^2; during it 4.97-5.05 m/s^2 on average of 5.25, from 4.1 to 5.75.
+  const seed_rate::Rate r = seed_rate::over_seeds("the push observer, 394 N to the right, 4 s", 1, 3, [](int seed) {
+    auto o = boxing::parse_cli({"--scenario", "push", "--seed", std::to_string(seed), "--push-dir", "270",
+                                "--push-force", "394", "--push-duration", "0.2", "--push-at", "2", "--stepping", "on"});
+    if (!o.ok()) return o.error();
+    auto w = boxing::make_world(*o);
+    if (!w.ok()) return w.error();
+    boxing::World& world = **w;
+    const boxing::Boxer& b = world.boxers[0];
+    const double expected = 394.0 / b.control_body.total_mass;
+    double before = 0.0, during_min = 1e9, during_max = 0.0, after_sum = 0.0;
+    Eigen::Vector2d during_sum = Eigen::Vector2d::Zero();
+    int n = 0, after_n = 0, after_over = 0;
+    while (world.data.time < 4.0) {
+      boxing::step_world(world);
+      const Eigen::Vector2d a = b.ctl.balance_steps.push_acc;
+      const double t = world.data.time;
+      if (t > 1.0 && t < 2.0) before = std::max(before, a.norm());
+      if (t > 2.05 && t < 2.2) {  // past the filter's rise (10 ms)
+        during_min = std::min(during_min, a.norm()), during_max = std::max(during_max, a.norm());
+        during_sum += a, ++n;
+      }
+      if (t > 2.5) after_sum += a.norm(), ++after_n, after_over += a.norm() > b.settings.tuning.balance_step.push_acc;
     }
-    if (t > 2.5) after_sum += a.norm(), ++after_n, after_over += a.norm() > b.settings.tuning.balance_step.push_acc;
-  }
-  EXPECT_LT(before, 0.5);
-  EXPECT_NEAR(during_sum.x() / n, 0.0, 0.3);
-  EXPECT_NEAR(during_sum.y() / n, -expected, 0.1 * expected);  // heading 0: to the right is -y
-  EXPECT_GT(during_min, 0.7 * expected);
-  EXPECT_LT(during_max, 1.3 * expected);
-  // After it, through the recovery's steps: small on average; a landing's impact reads for a few milliseconds (its
-  // contact forces change within the step), under the re-planning's threshold nearly all the time.
-  EXPECT_LT(after_sum / after_n, 0.5);
-  EXPECT_LT(after_over, after_n / 20);
-}
-
-TEST(BalanceSteps, ALongerPushIsSteppedOutOfByALandingReplannedUntilThePushEnds) {
-  // Yin's sideways momentum (79 kg m/s) as 197 N for 0.4 s to the right: the first step starts while the push has
-  // 0.3 s to go. Re-planned only for the first 40% of its swing it landed short and the boxer fell on these seeds;
-  // re-planned while the push observer still reads the push, it stands (seeds 1-48: 127 of 144 such pushes stood
-  // across forward, left and right, 109 before; docs/decisions/balance-steps.md, seventh round).
-  // (Seeds 5 and 3; with the com lowered for a step down, balance_step.h reach_share, right 197 N stands on 40 of seeds
-  // 1-48, 37 re-planned for the first 40% only.)
-  for (const char* seed : {"5", "3"}) expect_stepped_out_of(seed, "270", "197", "0.4", 7.0, 1);
+    const auto f = [](double x) { return std::to_string(x); };
+    std::printf("  seed %d: before %.3f; during x %.3f, y %.3f (%.3f expected), %.3f-%.3f; after %.3f on average, %d of %d "
+                "steps over the threshold\n", seed, before, during_sum.x() / n, during_sum.y() / n, -expected, during_min,
+                during_max, after_sum / after_n, after_over, after_n);
+    seed_rate::Why why;
+    why.check(before < 0.5, "before the push " + f(before) + " m/s^2");
+    why.check(std::abs(during_sum.x() / n) < 0.3, "during it, forward " + f(during_sum.x() / n) + " m/s^2");
+    // heading 0: to the right is -y
+    why.check(std::abs(during_sum.y() / n + expected) < 0.1 * expected, "during it " + f(during_sum.y() / n) + " m/s^2");
+    why.check(during_min > 0.7 * expected && during_max < 1.3 * expected,
+              "during it from " + f(during_min) + " to " + f(during_max) + " m/s^2");
+    // After it, through the recovery's steps: under the re-planning's threshold (push_acc, 2 m/s^2) on average by half
+    // at least, and over it in under 5% of the steps (a landing's impact reads for a few milliseconds: its contact
+    // forces change within the step). measured (seeds 1-10): the average 0.06-0.53 m/s^2 (p50 0.15; 0.5 was the bound
+    // until seed 2's 0.53 showed it fitted to seed 1's 0.09), over the threshold 0-15 of 361 steps.
+    why.check(after_sum / after_n < 0.5 * b.settings.tuning.balance_step.push_acc, "after it " + f(after_sum / after_n) + " m/s^2 on average");
+    why.check(after_over < after_n / 20, "after it over the threshold " + std::to_string(after_over) + " steps");
+    return why.str();
+  });
+  EXPECT_TRUE(r.all());
 }
 
 // The planted feet's slide (BoxerMetrics::foot_slide): a boxer standing in guard does not slide its feet (the metric
@@ -453,57 +548,77 @@ TEST(BalanceSteps, ALongerPushIsSteppedOutOfByALandingReplannedUntilThePushEnds)
 // foot's plantings is at least how far the foot ended up from where it started (checked against the bodies'
 // positions). The rear hook's pivot slides the rear foot (docs/decisions/foot-slide.md): not a bar, a reading.
 TEST(FootSlide, AGuardStandsStillAndADrillsSlideIsAtLeastTheFootsDisplacement) {
-  const auto still = run({"--scenario", "stand", "--seed", "1"}, 10.0);
-  ASSERT_FALSE(still.fell);
-  EXPECT_LT(still.foot_slide[0], 0.005);
-  EXPECT_LT(still.foot_slide[1], 0.005);
-
-  auto o = boxing::parse_cli({"--scenario", "stand", "--seed", "1", "--clip", "rear_hook"});
-  ASSERT_TRUE(o.ok()) << o.error();
-  auto w = boxing::make_world(*o);
-  ASSERT_TRUE(w.ok()) << w.error();
-  boxing::World& world = **w;
-  const boxing::Boxer& b = world.boxers[0];
-  const auto sole = [&](int k) {  // the sole centre, as the metric reads it
-    const eng::physics::Pose& x = world.data.x[b.bodies.body[b.bones.foot[k]]];
-    return Eigen::Vector2d((x.p + x.R * b.settings.tuning.foot.centre).head<2>());
-  };
-  boxing::step_world(world);
-  const Eigen::Vector2d start[2] = {sole(0), sole(1)};
-  for (int i = 1; i < int(10.0 / boxing::kPhysicsDt); ++i) boxing::step_world(world);
-  ASSERT_FALSE(b.metrics.fell);
-  EXPECT_EQ(b.metrics.balance_steps + b.metrics.steps_taken, 0);
-  for (int k = 0; k < 2; ++k) {
-    const double moved = (sole(k) - start[k]).norm();
-    EXPECT_GE(b.metrics.foot_slide[k], moved - 1e-3) << "foot " << k << " moved " << moved << " m";
-  }
+  // Seeds 1-3, every seed required (the metric's bookkeeping, not the stance, makes it pass).
+  const seed_rate::Rate r = seed_rate::over_seeds("foot slide: guard 10 s, rear_hook drill 10 s", 1, 3, [](int seed) {
+    seed_rate::Why why;
+    const auto still = run({"--scenario", "stand", "--seed", std::to_string(seed)}, 10.0);
+    why.check(!still.fell, "guard: " + fell_why(still));
+    why.check(still.foot_slide[0] < 0.005 && still.foot_slide[1] < 0.005,
+              "guard: feet slid " + std::to_string(still.foot_slide[0]) + ", " + std::to_string(still.foot_slide[1]) + " m");
+    auto o = boxing::parse_cli({"--scenario", "stand", "--seed", std::to_string(seed), "--clip", "rear_hook"});
+    if (!o.ok()) return o.error();
+    auto w = boxing::make_world(*o);
+    if (!w.ok()) return w.error();
+    boxing::World& world = **w;
+    const boxing::Boxer& b = world.boxers[0];
+    const auto sole = [&](int k) {  // the sole centre, as the metric reads it
+      const eng::physics::Pose& x = world.data.x[b.bodies.body[b.bones.foot[k]]];
+      return Eigen::Vector2d((x.p + x.R * b.settings.tuning.foot.centre).head<2>());
+    };
+    boxing::step_world(world);
+    const Eigen::Vector2d start[2] = {sole(0), sole(1)};
+    for (int i = 1; i < int(10.0 / boxing::kPhysicsDt); ++i) boxing::step_world(world);
+    why.check(!b.metrics.fell, "drill: " + fell_why(b.metrics));
+    why.check(b.metrics.balance_steps + b.metrics.steps_taken == 0, "drill: a step was taken");
+    for (int k = 0; k < 2; ++k) {
+      const double moved = (sole(k) - start[k]).norm();
+      why.check(b.metrics.foot_slide[k] >= moved - 1e-3, "drill: foot " + std::to_string(k) + " moved " +
+                                                             std::to_string(moved) + " m, slid " +
+                                                             std::to_string(b.metrics.foot_slide[k]));
+    }
+    return why.str();
+  });
+  EXPECT_TRUE(r.all());
 }
 
 // The rear foot under a cross drill: each cross turns the rear leg over the planted foot until the ankle's twist stops
 // it at its limit; the step's stop, unplanned, yanked the foot past its friction and it slid a few cm a punch (the graph
 // walks' rear feet 0.2-1.0 m in 10 minutes, off their crates). With the feet's limits in the plan (BalanceQpTuning::
-// limit_weight) it stays put. 20 s of crosses, seed 1; the same drill with the limits left out of the plan.
+// limit_weight) it stays put. 20 s of crosses; the same drill with the limits left out of the plan.
 TEST(FootSlide, TheCrossDrillsRearFootStaysPlantedWithTheAnkleLimitsInThePlan) {
-  const auto rear_slide = [](double limit_weight) {
-    auto o = boxing::parse_cli({"--scenario", "stand", "--seed", "1", "--clip", "cross"});
-    EXPECT_TRUE(o.ok()) << o.error();
-    auto w = boxing::make_world(*o);
-    EXPECT_TRUE(w.ok()) << w.error();
-    boxing::World& world = **w;
-    for (boxing::Boxer& b : world.boxers) b.settings.tuning.qp.limit_weight = limit_weight;
-    for (int i = 0; i < int(20.0 / boxing::kPhysicsDt); ++i) boxing::step_world(world);
-    const boxing::Boxer& b = world.boxers[0];
-    std::printf("limit weight %g: feet slid %.3f / %.3f m%s\n", limit_weight, b.metrics.foot_slide[0],
-                b.metrics.foot_slide[1], b.metrics.fell ? ", fell" : "");
-    return std::make_pair(b.metrics.foot_slide[1], b.metrics.fell);
-  };
-  const auto planned = rear_slide(boxing::BalanceQpTuning{}.limit_weight), unplanned = rear_slide(0.0);
-  EXPECT_FALSE(planned.second);
-  EXPECT_LT(planned.first, 0.03);  // (1.2 cm)
-  // Unplanned: 16.5 cm, and the boxer fell (at 10 s on this seed before the limits were planned).
-  EXPECT_GT(unplanned.first, 5.0 * planned.first);
+  // Seeds 1-3. measured: planned, the rear foot slid 1.2, 1.2, 2.1 cm (bound 3 cm: every seed); unplanned 16.5 cm (and
+  // the boxer fell), 16.2, 1.9 cm: more than 5 times the planned slide on 2 of 3 (seed 3's rear foot holds either way);
+  // bound 1 of 3, one under the measured.
+  int slid = 0;
+  std::string stayed;
+  const seed_rate::Rate r = seed_rate::over_seeds("cross drill 20 s, the rear foot's slide", 1, 3, [&](int seed) {
+    const auto rear_slide = [seed](double limit_weight) {
+      auto o = boxing::parse_cli({"--scenario", "stand", "--seed", std::to_string(seed), "--clip", "cross"});
+      EXPECT_TRUE(o.ok()) << o.error();
+      auto w = boxing::make_world(*o);
+      EXPECT_TRUE(w.ok()) << w.error();
+      boxing::World& world = **w;
+      for (boxing::Boxer& b : world.boxers) b.settings.tuning.qp.limit_weight = limit_weight;
+      for (int i = 0; i < int(20.0 / boxing::kPhysicsDt); ++i) boxing::step_world(world);
+      const boxing::Boxer& b = world.boxers[0];
+      std::printf("  seed %d, limit weight %g: feet slid %.3f / %.3f m%s\n", seed, limit_weight, b.metrics.foot_slide[0],
+                  b.metrics.foot_slide[1], b.metrics.fell ? ", fell" : "");
+      return std::make_pair(b.metrics.foot_slide[1], b.metrics.fell);
+    };
+    const auto planned = rear_slide(boxing::BalanceQpTuning{}.limit_weight), unplanned = rear_slide(0.0);
+    // Unplanned (the contrast: otherwise this test shows nothing).
+    if (unplanned.first > 5.0 * planned.first) ++slid;
+    else stayed += " " + std::to_string(seed);
+    seed_rate::Why why;
+    why.check(!planned.second, "planned: fell");
+    why.check(planned.first < 0.03, "planned: the rear foot slid " + std::to_string(planned.first) + " m");
+    return why.str();
+  });
+  EXPECT_TRUE(r.all());
+  EXPECT_GE(slid, 1) << "unplanned, the rear foot slid no more than planned on seeds" << stayed;
 }
 
+// (Still a situation found on one seed, not yet brought about directly: docs/decisions/test-bounds.md, "Left".)
 TEST(BalanceSteps, AStanceTheRecoveryLeftCrossedReturnsToOneTheBoxerCanFightFrom) {
   // 394 N x 0.2 s to the right, seed 16: the lead (left) foot crosses over to land 0.5 m right of the rear one, the
   // rear foot follows, and the recovery settles with the feet crossed, the legs through each other. Yin's third
@@ -531,31 +646,50 @@ TEST(BalanceSteps, AStanceTheRecoveryLeftCrossedReturnsToOneTheBoxerCanFightFrom
 }
 
 TEST(BalanceSteps, AReturnStepLandsWhereItWasPlanned) {
-  // 394 N x 0.2 s to the right, seeds 6, 11 and 13, 8 s: each recovery ends in a return step. Its swing's path
-  // acceleration fed forward (BalanceQpTuning::swing_acc_feed_forward), the sole comes down within a centimetre of where
-  // the return planned it; tracked on position and velocity alone, the PD trailed the ease's stop and the foot ran on
-  // 3-4 cm past its landing.
-  for (const char* seed : {"6", "11", "13"}) {
+  // 394 N x 0.2 s to the right, 8 s: a recovery that ends in a return step. Its swing's path acceleration fed forward
+  // (BalanceQpTuning::swing_acc_feed_forward), the sole comes down within a centimetre of where the return planned it;
+  // tracked on position and velocity alone, the PD trailed the ease's stop and the foot ran on 3-4 cm past its
+  // landing (seeds 6, 11 and 13, the ones named before). Seeds 1-6, the seeds whose recovery takes a return step both
+  // ways. measured: seeds 2, 3, 4, 6 take one; fed forward 0.5, 7.2, 1.8, 0.4 cm off, PD alone 3.3, 2.9, 37.1, 2.0 cm:
+  // within 1 cm fed forward on 2 of 4, closer than PD alone on 3 of 4 (seed 3's fed-forward return misses by 7 cm: the
+  // claim holds on some recoveries, not all). bound: one of each under the measured (a seed may move), and at least 3
+  // seeds with a return step, or the test shows nothing.
+  struct Miss { int seed; double fed, pd; bool fell; };
+  std::vector<Miss> misses;
+  for (int seed = 1; seed <= 6; ++seed) {
     const auto right_push = [&](double share) {
-      return run({"--scenario", "push", "--seed", seed, "--push-dir", "270", "--push-force", "394", "--push-duration",
-                  "0.2", "--push-at", "2", "--stepping", "on"},
+      return run({"--scenario", "push", "--seed", std::to_string(seed), "--push-dir", "270", "--push-force", "394",
+                  "--push-duration", "0.2", "--push-at", "2", "--stepping", "on"},
                  8.0, [&](boxing::BoxerTuning& t) {
                    EXPECT_EQ(t.qp.swing_acc_feed_forward, 1.0);  // as built
                    t.qp.swing_acc_feed_forward = share;
                  });
     };
     const boxing::BoxerMetrics fed = right_push(1.0), pd = right_push(0.0);
-    ASSERT_GE(fed.landings[1], 1) << "seed " << seed;
-    ASSERT_GE(pd.landings[1], 1) << "seed " << seed;
-    const double fed_miss = fed.landing_miss_sum[1] / fed.landings[1], pd_miss = pd.landing_miss_sum[1] / pd.landings[1];
-    std::printf("seed %s: a return step's landing from its plan: %.1f cm (fed forward), %.1f cm (PD alone)\n", seed,
-                100.0 * fed_miss, 100.0 * pd_miss);
-    EXPECT_LT(fed_miss, 0.01) << "seed " << seed;
-    EXPECT_GT(pd_miss, 0.02) << "seed " << seed;
-    EXPECT_FALSE(fed.fell) << "seed " << seed << ": fell at " << fed.fell_at << " s (" << fed.fell_reason << ")";
+    if (fed.landings[1] < 1 || pd.landings[1] < 1) {
+      std::printf("[seed_rate] seed %d: no return step (fed forward %d, PD alone %d)\n", seed, fed.landings[1],
+                  pd.landings[1]);
+      continue;
+    }
+    misses.push_back({seed, fed.landing_miss_sum[1] / fed.landings[1], pd.landing_miss_sum[1] / pd.landings[1], fed.fell});
+    std::printf("[seed_rate] seed %d: a return step's landing from its plan: %.1f cm (fed forward), %.1f cm (PD alone)\n",
+                seed, 100.0 * misses.back().fed, 100.0 * misses.back().pd);
   }
+  int within = 0, closer = 0;
+  std::string failed;
+  for (const Miss& m : misses) {
+    within += m.fed < 0.01, closer += m.fed < m.pd;
+    if (m.fed >= 0.01 || m.fed >= m.pd || m.fell)
+      failed += "\n  seed " + std::to_string(m.seed) + ": " + std::to_string(m.fed) + " m fed forward, " +
+                std::to_string(m.pd) + " m PD alone" + (m.fell ? ", fell" : "");
+    EXPECT_FALSE(m.fell) << "seed " << m.seed << ": fell, fed forward";
+  }
+  ASSERT_GE(misses.size(), 3u) << "too few return steps to show anything";
+  EXPECT_GE(within, 1) << within << " of " << misses.size() << " within 1 cm:" << failed;
+  EXPECT_GE(closer, 2) << closer << " of " << misses.size() << " closer fed forward:" << failed;
 }
 
+// (Still a situation found on one seed, not yet brought about directly: docs/decisions/test-bounds.md, "Left".)
 TEST(BalanceSteps, AFootTheRecoveryLeftOnAnEdgeIsRePlacedOntoAGoodFoothold) {
   // Yin's forward push (413 N x 0.2 s) on seeds 5 and 7, and the left one (394 N) on seed 1, 10 s: each recovery ends
   // in a stance the boxer can fight from (no return step) with one sole over a crate's edge (by the clips' foothold
@@ -583,6 +717,7 @@ TEST(BalanceSteps, AFootTheRecoveryLeftOnAnEdgeIsRePlacedOntoAGoodFoothold) {
   }
 }
 
+// (Still a situation found on one seed, not yet brought about directly: docs/decisions/test-bounds.md, "Left".)
 TEST(BalanceSteps, AReturnThatLandsOnAnEdgeIsFollowedByARePlacement) {
   // Yin's left push (394 N x 0.2 s) on seed 4 and the right one on seed 6, 14 s: each recovery ends in a return step
   // that comes down with a sole over a crate's edge (on_poor_foothold). With the follow-up (BalanceStepTuning::
@@ -612,15 +747,21 @@ TEST(BalanceSteps, AReturnThatLandsOnAnEdgeIsFollowedByARePlacement) {
 
 TEST(BalanceSteps, AStandingBoxerTakesNoneAndItsLegsNeverTouch) {
   // Standing in guard for 10 s: the capture point never leaves the soles, no step is taken for nothing; the guard's
-  // legs stay apart (BoxerMetrics::legs_overlap_*), its thighs never touch.
-  const auto m = run({"--scenario", "stand", "--seed", "4", "--stepping", "on"}, 10.0);
-  EXPECT_FALSE(m.fell);
-  EXPECT_EQ(m.balance_steps, 0);
-  EXPECT_EQ(m.legs_overlap_max, 0.0);
-  EXPECT_EQ(m.legs_overlap_s, 0.0);
-  EXPECT_EQ(m.thighs_touch_s, 0.0);
+  // legs stay apart (BoxerMetrics::legs_overlap_*), its thighs never touch. Seeds 1-3, every seed required (measured:
+  // 3 of 3; seed 4 was the one named).
+  const seed_rate::Rate r = seed_rate::over_seeds("standing 10 s, steps on", 1, 3, [](int seed) {
+    const auto m = run({"--scenario", "stand", "--seed", std::to_string(seed), "--stepping", "on"}, 10.0);
+    seed_rate::Why why;
+    why.check(!m.fell, fell_why(m));
+    why.check(m.balance_steps == 0, std::to_string(m.balance_steps) + " balance steps");
+    why.check(m.legs_overlap_max == 0.0 && m.legs_overlap_s == 0.0, "legs through each other");
+    why.check(m.thighs_touch_s == 0.0, "thighs touched " + std::to_string(m.thighs_touch_s) + " s");
+    return why.str();
+  });
+  EXPECT_TRUE(r.all());
 }
 
+// (Still a situation found on one seed, not yet brought about directly: docs/decisions/test-bounds.md, "Left".)
 TEST(BalanceSteps, ACrossOversThighsHoldEachOtherOffWhereTheyPassedThroughEachOther) {
   // 394 N x 0.2 s to the right, seed 3: the left foot crosses over and the feet end crossed 0.4-0.5 m. With the thighs
   // not colliding (as every leg geom was until the fourteenth round, docs/decisions/balance-steps.md), they stood in
@@ -658,6 +799,7 @@ TEST(BalanceSteps, ACrossOversThighsHoldEachOtherOffWhereTheyPassedThroughEachOt
   EXPECT_GE(colliding.balance_steps, 2);
 }
 
+// (Still a situation found on one seed, not yet brought about directly: docs/decisions/test-bounds.md, "Left".)
 TEST(BalanceSteps, TheLegClearanceKeepsACrossedStancesLegsOutOfEachOther) {
   // 394 N x 0.2 s to the left, seed 7, for 14 s: the recovery crosses the feet, and without the balance QP's leg
   // clearance (BalanceQpTuning::leg_clearance_weight 0) the legs stood through each other by over 1 cm for 2.3 s and
@@ -681,6 +823,7 @@ TEST(BalanceSteps, TheLegClearanceKeepsACrossedStancesLegsOutOfEachOther) {
   EXPECT_GE(on.balance_steps, 2);
 }
 
+// (Still a situation found on one seed, not yet brought about directly: docs/decisions/test-bounds.md, "Left".)
 TEST(BalanceSteps, AReturnThatWouldStepOffThePlatformIsTakenByTheOtherFoot) {
   // 394 N x 0.2 s to the right, seed 3: a second recovery leaves the right foot 0.1 m from the platform's edge, and its
   // return (where the stance has it relative to the left foot) lands on the floor, 0.36 m below its crate. The boxer

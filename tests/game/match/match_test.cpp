@@ -1,9 +1,12 @@
 // The match (game/match/): punches are counted from the clips the AI asks for, land only through the solver's hit
 // events (the striking glove on head or torso at speed; glove or arm = blocked), a knocked-down boxer gets up from the
-// way it lies, and the same seed gives the same fight.
+// way it lies, and the same seed gives the same fight. The fight's behaviour is asserted over fixed seed ranges
+// (seed_rate.h: seeds 1-N, each test's N and rate stated, the measurements in docs/decisions/test-bounds.md); a get-up
+// and a rock are brought about directly (a scripted push, a lower rocking threshold) rather than waited for.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <functional>
 #include <set>
 
@@ -11,8 +14,9 @@
 #include "game/interaction/interaction.h"
 #include "game/match/body_parts.h"
 #include "game/match/fighter_ai.h"
-#include "game/match/match.h"
 #include "game/match/punch_aim.h"
+#include "game/seed_rate.h"
+#include "game/match/match.h"
 #include "game/world.h"
 
 namespace boxing {
@@ -32,79 +36,129 @@ std::unique_ptr<World> run_match(uint64_t seed, double seconds, const std::funct
   return std::move(*w);
 }
 
-TEST(Match, PunchesLandOnlyThroughTheStrikingGloveOnHeadOrTorsoAtSpeed) {
-  auto w = run_match(1, 40.0);
-  ASSERT_TRUE(w);
-  const Match& m = *w->match;
+// The rules every punch of a fight obeys (PunchesLandOnly...): "" when all do, otherwise which broke them.
+std::string punches_obey_the_rules(const World& w) {
+  const Match& m = *w.match;
+  seed_rate::Why why;
   int thrown[2] = {0, 0}, landed[2] = {0, 0};
   for (size_t i = 0; i < m.events.size(); ++i) {
     const PunchEvent& e = m.events[i];
+    const std::string at = e.punch + " at " + std::to_string(e.t) + " s";
     ++thrown[e.boxer];
     const bool resolving = m.fighter[e.boxer].landing == int(i);  // its impact window still open at the end
     if (e.landed) {
       ++landed[e.boxer];
-      EXPECT_TRUE(e.hit_part == "head" || e.hit_part == "torso") << e.punch << " at " << e.t;
-      EXPECT_GE(e.speed, m.tuning.land_speed);
-      EXPECT_GT(e.impulse, 0.0);
+      why.check(e.hit_part == "head" || e.hit_part == "torso", at + " landed on " + e.hit_part);
+      why.check(e.speed >= m.tuning.land_speed, at + " landed slow");
+      why.check(e.impulse > 0.0, at + " landed with no impulse");
       if (!resolving) {
-        EXPECT_GT(e.damage, 0.0) << e.punch << " at " << e.t;
+        why.check(e.damage > 0.0, at + " landed with no damage");
       }
-      EXPECT_FALSE(e.blocked);
+      why.check(!e.blocked, at + " landed and blocked");
     }
     if (e.blocked) {
-      EXPECT_TRUE(e.hit_part == "glove" || e.hit_part == "arm");
+      why.check(e.hit_part == "glove" || e.hit_part == "arm", at + " blocked by " + e.hit_part);
     }
     // The glove moved (a punch, not a pose), unless the other's punch landing as it started cut it short (the hit
     // reaction is forced over it).
     bool cut_short = false;
     for (const PunchEvent& o : m.events)
       cut_short = cut_short || (o.boxer != e.boxer && o.landed && o.t <= e.t && o.t > e.t - 0.6);
-    if (e.t < w->data.time - 0.2 && !cut_short) {
-      EXPECT_GT(e.peak_speed, 0.5) << e.punch << " at " << e.t;
+    if (e.t < w.data.time - 0.2 && !cut_short) {
+      why.check(e.peak_speed > 0.5, at + ": the glove did not move");
     }
   }
   for (int k = 0; k < 2; ++k) {
-    EXPECT_EQ(m.fighter[k].thrown, thrown[k]);
-    EXPECT_EQ(m.fighter[k].landed, landed[k]);
-    EXPECT_GE(thrown[k], 8) << "boxer " << k;  // the AI punches (about 1 attempt a second in range)
+    why.check(m.fighter[k].thrown == thrown[k] && m.fighter[k].landed == landed[k], "the counts disagree");
+    why.check(thrown[k] >= 8, "boxer " + std::to_string(k) + " threw " + std::to_string(thrown[k]));  // the AI punches
   }
-  EXPECT_GE(landed[0] + landed[1], 3);
-  EXPECT_GT(static_cast<int>(m.events.size()), landed[0] + landed[1]);  // and not everything lands
+  why.check(landed[0] + landed[1] >= 3, std::to_string(landed[0] + landed[1]) + " landed");
+  why.check(static_cast<int>(m.events.size()) > landed[0] + landed[1], "everything landed");  // not everything lands
+  return why.str();
 }
 
-TEST(Match, KnockedDownBoxerGetsUpFromTheWayItLiesWithinTheCount) {
-  auto w = run_match(6, 13.0);
-  ASSERT_TRUE(w);
-  const Match& m = *w->match;
-  ASSERT_FALSE(m.getups.empty()) << "seed 6 has a knockdown in its first 13 s (boxer 0 at 3.5 s, on its back, up at "
-                                    "8.4 s; scripts/match-sweep)";
-  const GetUp& g = m.getups.front();
-  EXPECT_TRUE(g.lying == "back" || g.lying == "front");
-  ASSERT_GE(g.up_at, 0.0);
-  EXPECT_LT(g.up_at - g.down_at, m.tuning.count_seconds);
-  EXPECT_GT(g.assist_time, 0.0);  // tracked with the root assist, and it is reported
-  EXPECT_GT(g.assist_force_sq_dt, 0.0);
-  for (const MatchFighter& f : m.fighter) EXPECT_EQ(f.falls_without_hit, 0);
-  // A knockdown follows a landed punch on that boxer.
-  bool hit_before = false;
-  for (const PunchEvent& e : m.events)
-    if (e.landed && e.boxer == 1 - g.boxer && e.t <= g.down_at) hit_before = true;
-  EXPECT_TRUE(hit_before);
+// Boxer k of the match pushed at its chest, `force` N for `duration` s, horizontally toward its opponent (toward > 0)
+// or away from it (toward < 0), that direction turned by `turn` rad about the vertical.
+void push_chest(World& w, int k, double toward, double force, double duration, double turn = 0.0) {
+  Eigen::Vector3d d = w.data.x[w.boxers[1 - k].bodies.body[0]].p - w.data.x[w.boxers[k].bodies.body[0]].p;
+  d.z() = 0.0;
+  d = Eigen::AngleAxisd(turn, Eigen::Vector3d::UnitZ()) * d;
+  InputEvent push;
+  push.kind = InputKind::Push;
+  push.boxer = k;
+  push.bone = "chest";
+  push.vec = toward * force * d.normalized();
+  push.duration = duration;
+  interaction_submit(w, push);
 }
 
-// Up from a knockdown, the boxer is put back on its mark standing as it stood at the start: seed 5's red (a build of
-// issue 15) got up
-// turned away from blue, its feet crossed under it; placed with the desired pose's legs (reaching for those feet) it
-// stood cross-legged, a foot 21 cm inside a crate, was lifted out, sank and fell 1 s later with no punch on it.
-TEST(Match, BoxerUpFromAKnockdownStandsOnItsMarkAsAtTheStart) {
-  auto w = run_match(6, 9.0);
-  ASSERT_TRUE(w);
-  const Match& m = *w->match;
-  ASSERT_FALSE(m.getups.empty()) << "seed 6: red down at 3.5 s, up at 8.4 s (scripts/match-sweep)";
-  const GetUp& g = m.getups.front();
-  ASSERT_GE(g.up_at, 0.0);
-  EXPECT_LT(g.reset_lift, 0.05);      // m: the clip's legs fitted to the mark's crates, nothing inside them
-  EXPECT_LT(g.reset_feet_off, 0.12);  // m: each ankle near where it stood at the start (the same stance, same crates)
+// The fight's punches, seeds 1-3, 20 s each (a seed passes when every punch thrown obeys the rules below, each boxer
+// throws at least 8, at least 3 land, not all of them, and no boxer falls without a hit).
+// measured (seeds 1-10, the first 20 s of 30-s runs): 10-16 thrown a boxer, 4-10 landed, no fall without a hit. bound:
+// every seed (the rules are the match's own bookkeeping, not a rate); 8 thrown a boxer, the AI's 1.0-1.6 attempts a
+// second (FighterStyle) in range about half the time, less a margin; 3 landed, under the fewest measured.
+TEST(Match, PunchesLandOnlyThroughTheStrikingGloveOnHeadOrTorsoAtSpeed) {
+  const seed_rate::Rate r = seed_rate::over_seeds("match 20 s: the punches' bookkeeping", 1, 3, [](int seed) {
+    auto w = run_match(seed, 20.0);
+    if (!w) return std::string("no world");
+    std::string why = punches_obey_the_rules(*w);
+    std::printf("  seed %d: %d and %d thrown, %d landed\n", seed, w->match->fighter[0].thrown, w->match->fighter[1].thrown,
+                w->match->fighter[0].landed + w->match->fighter[1].landed);
+    for (int k = 0; k < 2; ++k)
+      if (w->match->fighter[k].falls_without_hit != 0) why += "; boxer " + std::to_string(k) + " fell without a hit";
+    return why;
+  });
+  EXPECT_TRUE(r.all());
+}
+
+// A boxer down gets up from the way it lies within the count, and is put back on its mark standing as it stood at the
+// start (seed 5's red, a build of issue 15, got up turned away from blue, its feet crossed under it; placed with the
+// desired pose's legs, reaching for those feet, it stood cross-legged, a foot 21 cm inside a crate, was lifted out,
+// sank and fell 1 s later with no punch on it). The knockdown is brought about directly: boxer 0 shoved at the chest
+// at 2 s, 1500 N x 0.25 s (5 m/s of com velocity: no balance step holds it) away from blue (it lies on its back) or
+// toward him, turned 60 deg to pass beside him (straight at him red floored blue instead; turned, red lies on its
+// front on seeds 2 and 3, on its back on 1), seeds 1-3: every one of the 6 must get up within the count, and both
+// ways of lying (both get-up clips) must be among them (the fight's own knockdowns: 4 of 4 up within the count on
+// seeds 1-10's first 30 s, 3.8-4.6 s down; docs/decisions/test-bounds.md). measured: down at 2.46-2.52 s, up
+// 3.9-4.2 s later; lifted 0.000 m and the ankles 0.000 m off their marks at the reset (the start's stance put back).
+TEST(Match, KnockedDownBoxerGetsUpFromTheWayItLiesOnItsMarkWithinTheCount) {
+  constexpr double kPastBlue = 1.047;  // rad, 60 deg
+  int lying[2] = {0, 0};  // on its back, on its front
+  const seed_rate::Rate r = seed_rate::over_seeds("match, boxer 0 shoved down both ways", 1, 3, [&](int seed) {
+    seed_rate::Why why;
+    for (const double toward : {-1.0, 1.0}) {
+      const std::string way = toward < 0 ? "shoved back: " : "shoved forward: ";
+      auto w = run_match(seed, 2.0);
+      if (!w) return std::string("no world");
+      World& world = *w;
+      push_chest(world, 0, toward, 1500.0, 0.25, toward > 0 ? kPastBlue : 0.0);
+      const Match& m = *world.match;
+      const double count = m.tuning.count_seconds;
+      while (world.data.time < 3.0 + count && (m.getups.empty() || m.getups.front().up_at < 0.0)) step_world(world);
+      if (m.getups.empty()) {
+        why.check(false, way + "not down");
+        continue;
+      }
+      const GetUp& g = m.getups.front();
+      std::printf("  seed %d, %s%s down at %.2f s, up at %.2f s, lying %s, reset lift %.3f m, feet off %.3f m\n", seed,
+                  way.c_str(), g.boxer == 0 ? "red" : "blue", g.down_at, g.up_at, g.lying.c_str(), g.reset_lift,
+                  g.reset_feet_off);
+      why.check(g.boxer == 0, way + "blue went down");
+      why.check(g.lying == "back" || g.lying == "front", way + "lying '" + g.lying + "'");
+      ++lying[g.lying == "front"];
+      why.check(g.up_at >= 0.0 && g.up_at - g.down_at < count, way + "not up within the count");
+      why.check(g.assist_time > 0.0 && g.assist_force_sq_dt > 0.0, way + "no root assist reported");
+      // m: the clip's legs fitted to the mark's crates, nothing inside them; each ankle near where it stood at the
+      // start (the same stance, the same crates).
+      why.check(g.reset_lift < 0.05, way + "lifted " + std::to_string(g.reset_lift) + " m out of the crates");
+      why.check(g.reset_feet_off < 0.12, way + "an ankle " + std::to_string(g.reset_feet_off) + " m off its mark");
+    }
+    return why.str();
+  });
+  EXPECT_TRUE(r.all());
+  // Both get-ups (getup_back, getup_front) among the 6.
+  EXPECT_GE(lying[0], 1) << "none on its back";
+  EXPECT_GE(lying[1], 1) << "none on its front";
 }
 
 // Match 80's red, knocked down at 11.1 s, got up with its left leg behind the right; the guard's stance swung it
@@ -113,6 +167,7 @@ TEST(Match, BoxerUpFromAKnockdownStandsOnItsMarkAsAtTheStart) {
 // (seeds 1, 5, 73, 80 and 98 of 1-100). A boxer getting up lets its thighs pass through each other
 // (MatchTuning::getup_thighs_pass), as it passes through its opponent: red is up at 17.1 s. The runs are without the
 // give-up (MatchTuning::stand_up_give_up), to see the pass alone.
+// (Still a situation found on one seed, not yet brought about directly: docs/decisions/test-bounds.md, "Left".)
 TEST(Match, AGetUpsLegCannotCatchOnTheOtherThigh) {
   for (const bool pass : {false, true}) {
     auto w = run_match(80, 25.0, [pass](MatchTuning& t) {
@@ -136,6 +191,7 @@ TEST(Match, AGetUpsLegCannotCatchOnTheOtherThigh) {
 
 // A stand-up that does not end is given up and started again from the ground: match 80's red with its thighs colliding
 // (above), its leg caught behind the other, sinks back after 8 s of it, lies still, rises again and is up (at 25.0 s).
+// (Still a situation found on one seed, not yet brought about directly: docs/decisions/test-bounds.md, "Left".)
 TEST(Match, AStandUpThatDoesNotEndIsGivenUpAndStartedAgain) {
   auto w = run_match(80, 30.0, [](MatchTuning& t) { t.getup_thighs_pass = false; });
   ASSERT_TRUE(w);
@@ -148,11 +204,15 @@ TEST(Match, AStandUpThatDoesNotEndIsGivenUpAndStartedAgain) {
 }
 
 // The fight's balance steps (balance_step.h, on in the match): a shove its root assist cannot hold in place, 900 N x
-// 0.2 s at boxer 0's chest to either side at 5 s into the fight, seeds 1-8. In place (--stepping off) 10 of these 16
-// go down; with the steps 5. (Seeds 1-4 alone were 6 and 2 until the footwork's carried steps landed where planned,
-// stop 57, and 5 and 3 since: the fight before the shove is another one, and 8 shoves are too few to tell by 3.) (800 N until the com task asked only for what the soles give: in place 3 of 8 now go
-// down there, with the steps 1. The 64 shoves of docs/decisions/com-acceleration-in-support.md, 800 N: 14 in place,
-// 4 with the steps; 900 N: 22 and 12.) The steps are the fight's own: none is taken in place.
+// 0.2 s at boxer 0's chest to either side at 5 s into the fight, seeds 1-8 (16 shoves), down within 2.5 s. The steps
+// are the fight's own: none is taken in place. The force: of the two measured on the 64 shoves of
+// docs/decisions/com-acceleration-in-support.md (seeds 1-8, both boxers, +-x and +-y), 800 N floors 14 in place and
+// 4 with the steps, too few in place for 16 shoves to tell the two apart (3 of 8 on seeds 1-4); 900 N floors about a
+// third in place (22-23 of 64) and 12-15 with the steps. measured on the 16 here: 10 down in
+// place, 5 with the steps. bound: with the
+// steps at most three quarters of those in place (the 64 shoves' ratio is 12-15 / 22-23, 0.55-0.65; three quarters
+// leaves a shove or two of the 16 to move), and at least 4 balance steps taken (18
+// measured).
 TEST(MatchSteps, AShoveTheRootAssistCannotHoldIsCaughtByBalanceSteps) {
   int down[2] = {0, 0}, steps[2] = {0, 0};
   for (int stepping = 0; stepping < 2; ++stepping)
@@ -176,44 +236,109 @@ TEST(MatchSteps, AShoveTheRootAssistCannotHoldIsCaughtByBalanceSteps) {
         push.duration = 0.2;
         interaction_submit(w, push);
         for (int i = 0; i < int(2.5 * 240); ++i) step_world(w);
-        for (const GetUp& g : w.match->getups) down[stepping] += g.boxer == 0 && g.down_at >= 5.0;
+        bool went_down = false;
+        for (const GetUp& g : w.match->getups) went_down = went_down || (g.boxer == 0 && g.down_at >= 5.0);
+        down[stepping] += went_down;
         steps[stepping] += w.boxers[0].metrics.balance_steps;
+        std::printf("[seed_rate] shove %s, seed %d, %s: %s, %d balance steps\n", stepping ? "with the steps" : "in place",
+                    int(seed), side > 0 ? "+y" : "-y", went_down ? "down" : "up", w.boxers[0].metrics.balance_steps);
       }
   EXPECT_EQ(steps[0], 0);
   EXPECT_GE(steps[1], 4);
   std::printf("shoves that put boxer 0 down: %d of 16 with the steps, %d in place\n", down[1], down[0]);
-  EXPECT_LE(2 * down[1], down[0]) << "with the steps " << down[1] << " of 16 down, in place " << down[0];
+  EXPECT_LE(4 * down[1], 3 * down[0]) << "with the steps " << down[1] << " of 16 down, in place " << down[0];
+  EXPECT_GE(down[0], 4) << "in place too few go down to show anything";
 }
 
-// A hard hit short of a knockdown rocks the boxer back (MatchTuning::rock_damage): seed 34's punch before 7 s rocks
-// boxer 1 (blue), two steps back, its pelvis over 0.15 m behind its mark by 7 s; with rocking off the same hit plays
-// hit_head in place. The rocked boxer stays up. (Seed 18's jab at 5.9 s on boxer 0 until the com task asked only for
-// what the soles give, BalanceQpTuning::com_acc_in_support.)
+// A hard hit short of a knockdown rocks the boxer back (MatchTuning::rock_damage): the stagger clip, two steps back,
+// and the rocked boxer stays up; with rocking off the same hits play hit_head / hit_body in place. At the built
+// threshold (0.25) rocks are rare (8 of the 77 hits landed in seeds 1-10's first 20 s), so the test lowers it to
+// 0.15 (28 of those 77): what is tested is what a rock does, not how often one comes. Seeds 1-4, 12 s, rocking at
+// 0.15 and off; every hit of 0.15 or more: how far the hit boxer's pelvis went away from the thrower (the most within
+// 1.5 s of the hit; a hit whose window holds a referee's reset is left out). The bound: the stagger's clip carries
+// the pelvis 0.24 m back, hit_head 0.03 m: rocked back is more than half the stagger's, 0.12 m. (Seed 34's rock at
+// 0.25, and seed 18's before BalanceQpTuning::com_acc_in_support, were the hand-picked runs this replaces.)
+// measured: rocked, 0.21, 0.19, 0.29, 0.02 m back (3 of 4; seed 3's at 1.93 s stayed), none down; off, 0.00-0.08 m
+// (5 of 5). bounds: rocked back on at least half, in place on at least 80%: one hit of four or five may move.
+struct HardHit {
+  int seed = 0, boxer = 0;
+  double t = 0.0, damage = 0.0, back = 0.0;  // s, damage, m: the most it went away from the thrower within 1.5 s
+  bool rocked = false, down = false;  // down: a knockdown of that boxer within 2 s of the hit
+};
+
+std::vector<HardHit> hard_hits(int seed, double rock, double at_least) {
+  auto w = run_match(seed, 0.0, [rock](MatchTuning& t) { t.rock_damage = rock; });
+  if (!w) return {};
+  World& world = *w;
+  const Match& m = *world.match;
+  const auto pelvis = [&](int k) { return Eigen::Vector2d(world.data.x[world.boxers[k].bodies.body[0]].p.head<2>()); };
+  // Each landed punch (an event is logged when thrown and marked landed at its first touch), from the step it lands:
+  // where the hit boxer stood and which way is away from the thrower; then, for 1.5 s, the most it went that way.
+  struct Seen { size_t event; double t; Eigen::Vector2d from, away; int resets; double back = -1e9; bool reset = false; };
+  std::vector<Seen> seen;
+  std::vector<bool> registered;
+  while (world.data.time < 12.0) {
+    step_world(world);
+    registered.resize(m.events.size(), false);
+    for (size_t i = 0; i < m.events.size(); ++i) {
+      const PunchEvent& e = m.events[i];
+      if (registered[i] || !e.landed) continue;
+      registered[i] = true;
+      const int k = 1 - e.boxer;
+      seen.push_back({i, world.data.time, pelvis(k), (pelvis(k) - pelvis(e.boxer)).normalized(), m.resets});
+    }
+    for (Seen& h : seen) {
+      if (world.data.time > h.t + 1.5) continue;
+      h.back = std::max(h.back, (pelvis(1 - m.events[h.event].boxer) - h.from).dot(h.away));
+      h.reset = h.reset || m.resets != h.resets;
+    }
+  }
+  // Damage and rocking of each, read at the end (its impact window long closed).
+  std::vector<HardHit> hard;
+  for (const Seen& s : seen) {
+    const PunchEvent& e = m.events[s.event];
+    if (s.t > 12.0 - 1.5 || s.reset || e.damage < at_least) continue;
+    HardHit h;
+    h.seed = seed, h.boxer = 1 - e.boxer, h.t = s.t, h.damage = e.damage, h.back = s.back;
+    h.rocked = rock > 0.0 && e.damage >= rock;
+    for (const GetUp& g : m.getups) h.down = h.down || (g.boxer == h.boxer && g.down_at >= h.t && g.down_at < h.t + 2.0);
+    hard.push_back(h);
+  }
+  return hard;
+}
+
 TEST(Match, AHardHitRocksTheBoxerBack) {
-  constexpr uint64_t kSeed = 34;
-  constexpr int kRocked = 1;
-  const auto back_at_7s = [](double rock, int* rocked, int* downs) {
-    auto w = run_match(kSeed, 7.0, [rock](MatchTuning& t) { t.rock_damage = rock; });
-    if (!w) return 0.0;
-    const Boxer &a = w->boxers[1 - kRocked], &b = w->boxers[kRocked];
-    *rocked = w->match->fighter[kRocked].rocked;
-    *downs = static_cast<int>(w->match->getups.size());
-    return (b.ctl.mark - a.ctl.mark).normalized().dot(w->data.x[b.bodies.body[0]].p.head<2>() - b.ctl.mark);
+  constexpr double kRock = 0.15, kBack = 0.12;  // damage; m, half the stagger clip's 0.24 m
+  std::vector<HardHit> rocked, in_place;
+  for (int seed = 1; seed <= 4; ++seed) {
+    for (const HardHit& h : hard_hits(seed, kRock, kRock)) rocked.push_back(h);
+    for (const HardHit& h : hard_hits(seed, 0.0, kRock)) in_place.push_back(h);
+  }
+  const auto count = [](const char* what, const std::vector<HardHit>& v, const std::function<bool(const HardHit&)>& ok) {
+    int n = 0;
+    std::string failed;
+    for (const HardHit& h : v) {
+      std::printf("[seed_rate] %s: seed %d, boxer %d hit at %.2f s, damage %.2f: %.2f m back%s%s\n", what, h.seed, h.boxer,
+                  h.t, h.damage, h.back, h.rocked ? ", rocked" : "", h.down ? ", down" : "");
+      if (ok(h)) ++n;
+      else failed += "\n  seed " + std::to_string(h.seed) + ", hit at " + std::to_string(h.t) + " s: " +
+                     std::to_string(h.back) + " m back" + (h.down ? ", down" : "");
+    }
+    return std::make_pair(n, failed);
   };
-  int rocked = 0, downs = 0, rocked_off = 0, downs_off = 0;
-  const double back = back_at_7s(MatchTuning{}.rock_damage, &rocked, &downs);
-  const double back_off = back_at_7s(0.0, &rocked_off, &downs_off);
-  EXPECT_EQ(rocked, 1);
-  EXPECT_EQ(rocked_off, 0);
-  EXPECT_EQ(downs, 0);
-  EXPECT_GT(back, 0.15);
-  EXPECT_LT(back_off, 0.05);
+  const auto [back, back_failed] =
+      count("rocking at 0.15", rocked, [&](const HardHit& h) { return h.rocked && h.back > kBack && !h.down; });
+  const auto [still, still_failed] = count("rocking off", in_place, [&](const HardHit& h) { return h.back < kBack; });
+  ASSERT_GE(rocked.size(), 4u) << "too few hard hits to show anything";
+  ASSERT_GE(in_place.size(), 4u) << "too few hard hits to show anything";
+  EXPECT_GE(2 * back, int(rocked.size())) << back << " of " << rocked.size() << " rocked back:" << back_failed;
+  EXPECT_GE(10 * still, 8 * int(in_place.size())) << still << " of " << in_place.size() << " in place:" << still_failed;
 }
 
 // The AI presses a rocked opponent (FighterView::press): out of reach, it steps in as soon as it is free, not at the
 // footwork's cadence; and it asks for no footwork while its own feet are the balance's (feet_busy).
 TEST(FighterAi, PressesARockedOpponentButNotOnBusyFeet) {
-  auto w = run_match(1, 0.5);
+  auto w = run_match(1, 0.5);  // any seed: the first (the match gives the walker; the view is set by hand)
   ASSERT_TRUE(w);
   eng::anim::GraphWalker* walker = w->boxers[0].source.walker();
   ASSERT_TRUE(walker);
@@ -261,7 +386,7 @@ TEST(FighterAi, ThrowsMoreOfWhatLands) {
 }
 
 TEST(Match, SameSeedGivesTheSameFight) {
-  auto a = run_match(2, 12.0), b = run_match(2, 12.0);
+  auto a = run_match(2, 12.0), b = run_match(2, 12.0);  // any seed (determinism): the second
   ASSERT_TRUE(a && b);
   EXPECT_EQ(match_report(*a).dump(), match_report(*b).dump());
   EXPECT_FALSE(a->match->events.empty());
@@ -273,33 +398,43 @@ TEST(Match, SameSeedGivesTheSameFight) {
 // range and the referee's "apart" are one bound. (With "apart" 4 cm farther out than the range, seed 12's boxers stood
 // 0.86-0.87 m apart from 70 s to the bell, neither punching nor reset.)
 TEST(Match, StandingBoxersOutOfRangeAreBroughtTogether) {
-  Options o;
-  o.headless = true;
-  o.scenario_id = Scenario::Match;
-  o.seed = 12;
-  auto w = make_world(o);
-  ASSERT_TRUE(w) << w.error();
-  World& world = **w;
-  const auto standing = [&](int k) {
-    const BoxerState s = world.boxers[k].ctl.state.state;
-    return s == BoxerState::Guard || s == BoxerState::Stunned;
-  };
-  double apart = 0.0, longest = 0.0;
-  for (int i = 0; i < 90 * 240; ++i) {
-    step_world(world);
-    const bool both_out = standing(0) && standing(1) && !in_range(world, 0) && !in_range(world, 1);
-    apart = both_out ? apart + 1.0 / 240.0 : 0.0;
-    longest = std::max(longest, apart);
-  }
-  // (Not while a boxer presses a rocked opponent, MatchTuning::press_for: its steps close the gap.)
-  EXPECT_LE(longest, world.match->tuning.press_for + world.match->tuning.apart_time + 0.05);
-  EXPECT_GT(world.match->fighter[0].thrown + world.match->fighter[1].thrown, 50);  // and the fight goes on
+  // The bound is the referee's rule, whatever the fight: seeds 1-2, 45 s each, every seed required (seed 12 showed the
+  // 4 cm mismatch at 70 s; measured: the longest 0.37 and 0.57 s, 51-53 punches thrown).
+  const seed_rate::Rate r = seed_rate::over_seeds("match 45 s: standing apart", 1, 2, [](int seed) {
+    Options o;
+    o.headless = true;
+    o.scenario_id = Scenario::Match;
+    o.seed = seed;
+    auto w = make_world(o);
+    if (!w) return w.error();
+    World& world = **w;
+    const auto standing = [&](int k) {
+      const BoxerState s = world.boxers[k].ctl.state.state;
+      return s == BoxerState::Guard || s == BoxerState::Stunned;
+    };
+    double apart = 0.0, longest = 0.0;
+    for (int i = 0; i < 45 * 240; ++i) {
+      step_world(world);
+      const bool both_out = standing(0) && standing(1) && !in_range(world, 0) && !in_range(world, 1);
+      apart = both_out ? apart + 1.0 / 240.0 : 0.0;
+      longest = std::max(longest, apart);
+    }
+    std::printf("  seed %d: longest both standing out of range %.2f s, %d thrown\n", seed, longest,
+                world.match->fighter[0].thrown + world.match->fighter[1].thrown);
+    seed_rate::Why why;
+    // (Not while a boxer presses a rocked opponent, MatchTuning::press_for: its steps close the gap.)
+    why.check(longest <= world.match->tuning.press_for + world.match->tuning.apart_time + 0.05,
+              "apart " + std::to_string(longest) + " s");
+    why.check(world.match->fighter[0].thrown + world.match->fighter[1].thrown > 25, "the fight stopped");  // goes on
+    return why.str();
+  });
+  EXPECT_TRUE(r.all());
 }
 
 // The referee's reset starts the balance's steps over with the rest of the control: a recovery or a return step's
 // weight shift kept across it leaned the boxer for the stance it had left, with the AI's footwork held meanwhile.
 TEST(Match, AResetToTheMarksStartsTheBalancesStepsOver) {
-  auto w = run_match(3, 1.0);
+  auto w = run_match(3, 1.0);  // any seed (the state is set by hand): the third
   ASSERT_TRUE(w);
   World& world = *w;
   eng::control::BalanceStepState& st = world.boxers[0].ctl.balance_steps;
@@ -320,7 +455,7 @@ TEST(Match, PlayersBoxerPunchesOnlyOnCommand) {
   Options o;
   o.headless = true;
   o.scenario_id = Scenario::Match;
-  o.seed = 3;
+  o.seed = 3;  // any seed (the commands are scripted): the third
   o.player = 0;
   auto w = make_world(o);
   ASSERT_TRUE(w) << w.error();
@@ -370,7 +505,7 @@ TEST(ReplayBuffer, KeepsTheNewestFramesInOrder) {
 
 // The match records one frame per 60 Hz display frame for the replay.
 TEST(Match, RecordsTheLastSecondsForTheReplay) {
-  auto w = run_match(1, 6.0);
+  auto w = run_match(1, 6.0);  // any seed: the first
   ASSERT_TRUE(w);
   const ReplayBuffer& rb = w->match->replay;
   ASSERT_EQ(rb.count(), static_cast<int>(kReplaySeconds * 60));
@@ -414,20 +549,31 @@ double median_of(const Match& m, bool landed_only, double PunchEvent::*field) {
   return v[v.size() / 2];
 }
 
-// Seed 2: on seeds 1-6 (60 s) the median peak rose by 0.44, 1.88, 2.23, 1.17, 1.55 and 1.26 m/s. Seed 1 (0.65 until a
-// get-up's thighs passed through each other, getup_thighs_pass: the fight after its get-up at 16 s is another one) is
-// the closest to the bound.
+// Seeds 1-4, 20 s each, with the strike task and without it (the bent pose and the stiffer arm alone). A seed passes
+// when its landed punches' median fist speed is at least 5.6 m/s (Walilko 2005's jab: the bound is the real punch's
+// speed, not a measured one) and its median glove peak over every punch thrown rose by more than 0.5 m/s. (On seeds
+// 1-6 over 60 s it rose by 0.44, 1.88, 2.23, 1.17, 1.55 and 1.26 m/s: the hand-picked seed 2 stood in for them.)
+// measured (seeds 1-4): median fist speed 7.4-8.3 m/s, the peak up by 1.2-2.1 m/s, 5-10 landed; bound 3 of 4: one
+// seed of four may move with a last-bit difference between machines.
 TEST(Match, StrikeTaskBringsTheFistInAtARealPunchsSpeed) {
-  auto on = run_match(2, 60.0);
-  auto off = run_match(2, 60.0, [](MatchTuning& t) { t.strike_speed = 0.0; t.punch_arm_gain = 1.8; });
-  ASSERT_TRUE(on && off);
-  EXPECT_GE(median_of(*on->match, true, &PunchEvent::fist_speed), 5.6);
-  const double peak_on = median_of(*on->match, false, &PunchEvent::peak_speed);
-  const double peak_off = median_of(*off->match, false, &PunchEvent::peak_speed);
-  EXPECT_GT(peak_on, peak_off + 0.5) << peak_on << " vs " << peak_off;
-  int landed = 0;
-  for (const MatchFighter& f : on->match->fighter) landed += f.landed;
-  EXPECT_GE(landed, 8);
+  const seed_rate::Rate r = seed_rate::over_seeds("match 20 s, strike task on / off", 1, 4, [](int seed) {
+    auto on = run_match(seed, 20.0);
+    auto off = run_match(seed, 20.0, [](MatchTuning& t) { t.strike_speed = 0.0; t.punch_arm_gain = 1.8; });
+    if (!on || !off) return std::string("no world");
+    const double fist = median_of(*on->match, true, &PunchEvent::fist_speed);
+    const double peak_on = median_of(*on->match, false, &PunchEvent::peak_speed);
+    const double peak_off = median_of(*off->match, false, &PunchEvent::peak_speed);
+    int landed = 0;
+    for (const MatchFighter& f : on->match->fighter) landed += f.landed;
+    std::printf("  seed %d: landed %d, median fist speed %.2f m/s, median peak %.2f m/s (strike) %.2f (none)\n", seed,
+                landed, fist, peak_on, peak_off);
+    seed_rate::Why why;
+    why.check(fist >= 5.6, "median landed fist speed " + std::to_string(fist) + " m/s");
+    why.check(peak_on > peak_off + 0.5, "median peak " + std::to_string(peak_on) + " vs " + std::to_string(peak_off));
+    why.check(landed >= 3, std::to_string(landed) + " landed");
+    return why.str();
+  });
+  EXPECT_TRUE(r.at_least(3));
 }
 
 TEST(BodyParts, TheBoxersBonesMapToTheirParts) {
