@@ -56,11 +56,19 @@ void draw_control_panel(World& w, SceneView& view, PanelState& p) {
   ImGui::SetNextWindowCollapsed(!p.open, ImGuiCond_Always);
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoMove |
                                  ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoFocusOnAppearing;
-  p.open = ImGui::Begin("Controls (Tab)", nullptr, flags);
+  // Open = not collapsed (Tab, or the title bar's arrow). Not Begin's return value: the window fits its height every
+  // frame (size y 0, ImGuiCond_Always), and a window auto-fitting still lays its items out collapsed, so Begin
+  // returned true and the panel reopened the frame after Tab closed it.
+  ImGui::Begin("Controls (Tab)", nullptr, flags);
+  p.open = !ImGui::IsWindowCollapsed();
   if (!p.open) {
     ImGui::End();
     return;
   }
+  // No Tab focus on the panel's widgets: Tab is the game's (the panel's toggle), and with the panel focused (any
+  // click on it) ImGui's Tab moved the focus into the seed's text field, which then held the keyboard, so the game's
+  // keys went into it until the player clicked elsewhere. A field takes the keyboard only when clicked.
+  ImGui::PushAllowKeyboardFocus(false);
   for (const Boxer& b : w.boxers) {
     if (b.limp) continue;
     ImGui::PushID(b.index);
@@ -149,6 +157,7 @@ void draw_control_panel(World& w, SceneView& view, PanelState& p) {
     ImGui::TextDisabled("fight: J jab  K cross  U/I hooks  N/M uppercuts");
     ImGui::TextDisabled("       B block  A/D slip  S duck  W/X step");
   }
+  ImGui::PopAllowKeyboardFocus();
   ImGui::End();
 }
 

@@ -34,6 +34,13 @@ void draw_stats_panel(const HudStats& s) {
   ImGui::End();
 }
 
+std::string match_clock_text(const MatchHud& h) {
+  char line[64];
+  const int secs = static_cast<int>(h.clock_s);
+  std::snprintf(line, sizeof line, "ROUND %d   %d:%02d", h.round, secs / 60, secs % 60);
+  return line;
+}
+
 void draw_match_panel(const MatchHud& h) {
   const ImGuiIO& io = ImGui::GetIO();
   const float w = 460.0f;
@@ -45,10 +52,9 @@ void draw_match_panel(const MatchHud& h) {
                                  ImGuiWindowFlags_NoInputs;
   if (ImGui::Begin("##match", nullptr, flags)) {
     char line[128];
-    const int secs = static_cast<int>(h.clock_s);
-    std::snprintf(line, sizeof line, "ROUND %d   %d:%02d", h.round, secs / 60, secs % 60);
-    ImGui::SetCursorPosX(0.5f * (w - ImGui::CalcTextSize(line).x));
-    ImGui::TextUnformatted(line);
+    const std::string clock = match_clock_text(h);
+    ImGui::SetCursorPosX(0.5f * (w - ImGui::CalcTextSize(clock.c_str()).x));
+    ImGui::TextUnformatted(clock.c_str());
     const ImVec4 colour[2] = {ImVec4(0.85f, 0.15f, 0.12f, 1.0f), ImVec4(0.15f, 0.3f, 0.9f, 1.0f)};
     ImGui::Columns(2, nullptr, false);
     for (int k = 0; k < 2; ++k) {

@@ -29,5 +29,7 @@ struct MatchHud {
   std::string banner;
 };
 void draw_match_panel(const MatchHud& hud);
+// The panel's top line: the round and the time left in it, whole seconds as m:ss ("ROUND 1   2:59").
+std::string match_clock_text(const MatchHud& hud);
 
 }  // namespace boxing

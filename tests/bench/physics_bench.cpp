@@ -30,7 +30,8 @@
 #include "engine/physics/dynamics.h"
 #include "engine/physics/model.h"
 #include "engine/physics/step.h"
-#include "tests/bench/humanoid_from_mujoco.h"
+#include "tests/support/humanoid_from_mujoco.h"
+#include "tests/support/mujoco_crosscheck.h"
 
 namespace {
 
@@ -312,74 +313,24 @@ int profile_mode(int n) {
 
 
 // --------------------------------------------------------------------------------------------- check
-// Conversion check: both models share the q / v layout (free root, then MuJoCo's hinges in order), so at
-// random states every MuJoCo body pose, the joint-space inertia (+ armature) and the bias forces
-// (gravity + Coriolis) must agree with ours. Prints the largest differences; returns 1 if any is large.
+// Conversion check (tests/support/mujoco_crosscheck.h; the same comparison is the ctest test
+// tests/physics/mujoco_crosscheck_test.cpp): at 20 random states every MuJoCo body pose, geom pose, the joint-space
+// inertia (+ armature) and the bias forces must agree with ours. Prints the largest differences; returns 1 if any is
+// large.
 int check_mode() {
   Mj& h = mj();
-  Ours o(1, h.m->opt.timestep);
-  if (o.model.nq != h.m->nq || o.model.nv != h.m->nv) {
-    std::printf("check: nq/nv differ: ours %d/%d, MuJoCo %d/%d\n", o.model.nq, o.model.nv, h.m->nq, h.m->nv);
+  const bench::CrossCheck x = bench::crosscheck_mujoco(h.m, 20);
+  if (!x.same_layout()) {
+    std::printf("check: nq/nv differ: ours %d/%d, MuJoCo %d/%d\n", x.nq, x.nv, x.mj_nq, x.mj_nv);
     return 1;
   }
+  Ours o(1, h.m->opt.timestep);
   const int nv = h.m->nv;
-  std::vector<mjtNum> Mmj(size_t(nv) * nv);
-  VecX c(nv);
-  MatX M(nv, nv);
-  double dpos = 0, drot = 0, dgeom = 0, dM = 0, dc = 0, Mmax = 0, cmax = 0;
-  unsigned seed = 12345;
+  unsigned seed = 54321;
   auto rnd = [&]() {  // uniform [-1, 1), fixed LCG for reproducibility
     seed = seed * 1664525u + 1013904223u;
     return double(seed >> 8) / double(1u << 23) - 1.0;
   };
-  for (int trial = 0; trial < 20; ++trial) {
-    mj_resetData(h.m, h.d);
-    for (int i = 0; i < 3; ++i) h.d->qpos[i] += 0.5 * rnd();
-    Quat qr(1.0 + rnd(), rnd(), rnd(), rnd());
-    qr.normalize();
-    h.d->qpos[3] = qr.w(); h.d->qpos[4] = qr.x(); h.d->qpos[5] = qr.y(); h.d->qpos[6] = qr.z();
-    for (int i = 7; i < h.m->nq; ++i) h.d->qpos[i] = 0.8 * rnd();
-    for (int i = 0; i < nv; ++i) h.d->qvel[i] = 2.0 * rnd();
-    mj_forward(h.m, h.d);
-    mj_fullM(h.m, Mmj.data(), h.d->qM);
-    o.reset();
-    for (int i = 0; i < h.m->nq; ++i) o.d.q[i] = h.d->qpos[i];
-    for (int i = 0; i < nv; ++i) o.d.v[i] = h.d->qvel[i];
-    forward_kinematics(o.model, o.d);
-    crba(o.model, o.d, M);
-    bias_forces(o.model, o.d, c);
-    for (int b = 1; b < h.m->nbody; ++b) {
-      const bench::MappedBody& mb = o.maps[0][b];
-      const Vec3 p = o.d.x[mb.body].apply(mb.offset);
-      dpos = std::max(dpos, (p - Vec3(h.d->xpos[3 * b], h.d->xpos[3 * b + 1], h.d->xpos[3 * b + 2])).norm());
-      Mat3 Rm;
-      for (int r = 0; r < 3; ++r)
-        for (int k = 0; k < 3; ++k) Rm(r, k) = h.d->xmat[9 * b + 3 * r + k];
-      drot = std::max(drot, (o.d.x[mb.body].R - Rm).cwiseAbs().maxCoeff());
-    }
-    // geoms: ours are the world planes first, then the humanoid's geoms in MuJoCo order
-    int og = 0;
-    while (og < int(o.model.geoms.size()) && o.model.geoms[og].body == 0) ++og;
-    for (int g = 0; g < h.m->ngeom; ++g) {
-      if (h.m->geom_bodyid[g] == 0) continue;
-      const Geom& geom = o.model.geoms[og++];
-      const Pose X = o.d.x[geom.body] * geom.local;
-      dgeom = std::max(dgeom, (X.p - Vec3(h.d->geom_xpos[3 * g], h.d->geom_xpos[3 * g + 1], h.d->geom_xpos[3 * g + 2])).norm());
-      // capsule / sphere / box axes: compare the local Z axis (the capsule axis)
-      const Vec3 zm(h.d->geom_xmat[9 * g + 2], h.d->geom_xmat[9 * g + 5], h.d->geom_xmat[9 * g + 8]);
-      dgeom = std::max(dgeom, (X.R.col(2) - zm).norm());
-    }
-    for (int i = 0; i < nv; ++i) {
-      const int bi = o.model.dof_body[i];
-      for (int j = 0; j < nv; ++j) {
-        const double ours = M(i, j) + (i == j ? o.model.bodies[bi].armature : 0.0);
-        dM = std::max(dM, std::abs(ours - Mmj[size_t(i) * nv + j]));
-        Mmax = std::max(Mmax, std::abs(Mmj[size_t(i) * nv + j]));
-      }
-      dc = std::max(dc, std::abs(c[i] - h.d->qfrc_bias[i]));
-      cmax = std::max(cmax, std::abs(h.d->qfrc_bias[i]));
-    }
-  }
   // pre-contact trajectory from qpos0 with random rates (feet 0.2 m above the floor, no contact for the
   // first ~0.1 s): both integrate the same free flight with springs and damping (MuJoCo: Euler with
   // implicit damping; ours: implicit damping and springs), so q should agree up to the O(dt) integrator differences (informative, not checked).
@@ -395,10 +346,12 @@ int check_mode() {
   for (int i = 0; i < h.m->nq; ++i) dq = std::max(dq, std::abs(o.d.q[i] - h.d->qpos[i]));
   std::printf("check: %d pre-contact steps from qpos0: max |q ours - q MuJoCo| %.2e (contacts: ours %zu, MuJoCo %d)\n",
               pre_steps, dq, o.d.contacts.size(), h.d->ncon);
-  const bool ok = dpos < 1e-9 && drot < 1e-9 && dgeom < 1e-9 && dM < 1e-9 * Mmax && dc < 1e-8 * cmax;
-  std::printf("check (20 random states, nq %d nv %d): max |body pos diff| %.2e m, max |R diff| %.2e, "
+  const bool ok = x.body_pos < 1e-9 && x.body_rot < 1e-9 && x.geom_pose < 1e-9 && x.M < 1e-9 * x.M_max &&
+                  x.bias < 1e-8 * x.bias_max;
+  std::printf("check (%d random states, nq %d nv %d): max |body pos diff| %.2e m, max |R diff| %.2e, "
               "max geom pose diff %.2e, max |M diff| %.2e (max |M| %.2f), max |bias diff| %.2e (max |bias| %.2f): %s\n",
-              h.m->nq, nv, dpos, drot, dgeom, dM, Mmax, dc, cmax, ok ? "OK" : "MISMATCH");
+              x.states, h.m->nq, nv, x.body_pos, x.body_rot, x.geom_pose, x.M, x.M_max, x.bias, x.bias_max,
+              ok ? "OK" : "MISMATCH");
   return ok ? 0 : 1;
 }
 

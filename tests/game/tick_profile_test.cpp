@@ -52,38 +52,49 @@ TEST(TickProfile, ProfilingChangesNothingBitForBit) {
   EXPECT_FALSE(r.contains("collision"));
 }
 
-// Profiled, the stages are non-negative, each side's stages lie inside the interval that contains them (physics in
-// step1 + step2, the boxers' control in control), and together they account for nearly the whole tick (what is left:
-// input events, clear_applied, the scenario's forces; a missed stage would leave far more).
-TEST(TickProfile, StagesAreNonNegativeAndAddUpToTheTick) {
+// Profiled, every stage was entered and each side's stages lie inside the interval that contains them (physics in
+// step1 + step2, the boxers' control in control). Nothing here depends on how fast the machine is or how loaded
+// (ctest -j): no ratio of one timing to another, no time bound.
+//  * Entered: a stage's field is only ever written by its lap, so a stage the pipeline stopped timing (a lap removed
+//    or moved onto another field) stays exactly 0 however long the run; timed, it holds 480 ticks of real work
+//    (at least a microsecond a tick) read by CLOCK_MONOTONIC (nanoseconds), which a slower machine only makes larger.
+//  * Nested: the fine laps run inside the coarse stopwatch's interval on the same monotonic clock, so their sum cannot
+//    exceed it; it does if a profiled physics or control call runs outside step_world's stopwatch, or a stage is
+//    added into twice (a field summed from two laps, a profile not reset with the coarse times).
+// (Not asserted: that the fine stages cover nearly all of the coarse time. That is a ratio of wall-clock times, which
+// load on the other cores moves; docs/decisions/tick-stages.md measures it.)
+TEST(TickProfile, EveryStageIsEnteredAndLiesInsideItsInterval) {
   auto w = make("stand", Scenario::Stand, true);
   ASSERT_TRUE(w);
   for (int i = 0; i < 480; ++i) step_world(*w);
   const World::TickProfile& p = w->profile;
-  for (const double t : {p.physics.collision, p.physics.dynamics, p.physics.solver, p.physics.integration, p.control.graph,
-                         p.control.pose, p.control.stepping, p.control.servo, p.control.qp})
-    EXPECT_GE(t, 0.0);
-  EXPECT_GT(p.physics.collision, 0.0);
-  EXPECT_GT(p.physics.solver, 0.0);
-  EXPECT_GT(p.control.qp, 0.0);
+  const struct {
+    const char* name;
+    double ms;
+  } stages[] = {{"collision", p.physics.collision}, {"dynamics", p.physics.dynamics}, {"solver", p.physics.solver},
+                {"integration", p.physics.integration}, {"graph", p.control.graph},   {"pose", p.control.pose},
+                {"stepping", p.control.stepping},       {"servo", p.control.servo},   {"qp", p.control.qp}};
+  for (const auto& s : stages) EXPECT_GT(s.ms, 0.0) << s.name << " was never timed";
+  for (const double coarse : {p.step1_ms, p.control_ms, p.step2_ms, p.sense_ms}) EXPECT_GT(coarse, 0.0);
   EXPECT_LE(p.physics.total(), (p.step1_ms + p.step2_ms) * (1.0 + 1e-9));
   EXPECT_LE(p.control.total(), p.control_ms * (1.0 + 1e-9));
-  const double coarse = p.step1_ms + p.control_ms + p.step2_ms;
-  const double fine = p.physics.total() + p.control.total();
-  EXPECT_GT(fine, 0.95 * coarse) << "fine stages " << fine << " ms of " << coarse << " ms";
 
-  // The report: the old keys kept, the stages and the remainders add up to the tick.
+  // The report: the old keys kept, every stage's key, and the remainders (physics_other, control_other: the coarse
+  // time less its stages) non-negative by the nesting above; the keys add up to the tick, which holds by construction
+  // (the remainders are differences) and fails only if the report drops, renames or double-counts a key.
   const nlohmann::json r = world_report(*w)["tick_profile_ms"];
   double sum = 0.0;
   for (const char* k : {"collision", "dynamics", "solver", "integration", "physics_other", "graph", "pose", "stepping",
                         "servo", "qp", "control_other", "sense"}) {
     ASSERT_TRUE(r.contains(k)) << k;
-    EXPECT_GE(r[k].get<double>(), -1e-9) << k;
     sum += r[k].get<double>();
   }
+  EXPECT_GE(r["physics_other"].get<double>(), -1e-9);
+  EXPECT_GE(r["control_other"].get<double>(), -1e-9);
   const double total = r["step1"].get<double>() + r["control"].get<double>() + r["step2"].get<double>() +
                        r["sense"].get<double>();
   EXPECT_NEAR(sum, total, 1e-9 * total);
+  // The QP's solve (its latency histogram's sum) is timed inside the qp stage's lap: nested again.
   EXPECT_GT(r["qp_solve"].get<double>(), 0.0);
   EXPECT_LE(r["qp_solve"].get<double>(), r["qp"].get<double>());
 }

@@ -1,11 +1,12 @@
 // The shared-memory surface (engine/platform/shm_surface): what is written into it is what the X server shows.
-// Needs a display (xvfb-run); skipped without one.
+// Needs a display (xvfb-run); skipped without one, failed without one under CI=true (support/window_test_env.h).
 #include "engine/platform/shm_surface.h"
 
 #include <gtest/gtest.h>
 #include <chrono>
 #include <thread>
 #include "engine/platform/window.h"
+#include "support/window_test_env.h"
 #include "support/x11_window_pixels.h"
 
 using eng::platform::ShmSurface;
@@ -22,7 +23,7 @@ std::unique_ptr<eng::platform::Window> open_window(int w, int h) {
 }  // namespace
 
 TEST(ShmSurface, TheWindowShowsExactlyThePixelsWritten) {
-  if (!eng::platform::display_available()) GTEST_SKIP() << "no display (run under xvfb-run to exercise this)";
+  BOXING_REQUIRE_DISPLAY();
   auto win = open_window(320, 200);
   ASSERT_TRUE(win);
   const glm::ivec2 fb = win->framebuffer_size();
@@ -59,7 +60,7 @@ TEST(ShmSurface, TheWindowShowsExactlyThePixelsWritten) {
 }
 
 TEST(ShmSurface, RefusesANonPositiveSizeWithAReason) {
-  if (!eng::platform::display_available()) GTEST_SKIP() << "no display (run under xvfb-run to exercise this)";
+  BOXING_REQUIRE_DISPLAY();
   auto win = open_window(64, 64);
   ASSERT_TRUE(win);
   auto s = ShmSurface::create(*win, 0, 10);

@@ -11,12 +11,12 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "engine/platform/window.h"
 #include "game/cli.h"
 #include "game/interaction/mouse_hands.h"
 #include "game/scene_view.h"
 #include "game/world.h"
 #include "support/vulkan_test_env.h"
+#include "support/window_test_env.h"
 #include "test_paths.h"
 
 namespace {
@@ -37,8 +37,7 @@ void pixel_of(int boxer, const char* bone, double t, int& px, int& py) {
 }  // namespace
 
 TEST(HandsWindow, DragThrowAndPanelClickAsAPersonAndTheRecordingReplaysBitForBit) {
-  if (!eng::platform::display_available()) GTEST_SKIP() << "no display (run under xvfb-run to exercise this)";
-  if (std::system("command -v xdotool >/dev/null 2>&1") != 0) GTEST_SKIP() << "xdotool missing (scripts/deps installs it)";
+  BOXING_REQUIRE_DISPLAY_AND_XDOTOOL();
   boxing_test::pin_lavapipe_env();
   const std::string dir = std::string(BOXING_BINARY_DIR) + "/hands_window_test";
   const std::string report = dir + "/window.json", record = dir + "/session.json", replay = dir + "/replay.json";

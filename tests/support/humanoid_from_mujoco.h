@@ -1,6 +1,7 @@
 #pragma once
 // Converts a MuJoCo model (mjModel, e.g. /usr/share/mujoco/model/humanoid/humanoid.xml) into our
-// eng::physics::Model, for the MuJoCo comparison benchmark (tests/bench/physics_bench.cpp).
+// eng::physics::Model, for the MuJoCo comparison benchmark (tests/bench/physics_bench.cpp) and the cross-check test
+// (tests/physics/mujoco_crosscheck_test.cpp, through mujoco_crosscheck.h).
 //
 // CONVERSION RULES
 //  * Bodies keep MuJoCo's tree. A MuJoCo body with k hinges (abdomen, hips, ankles, shoulders) becomes a

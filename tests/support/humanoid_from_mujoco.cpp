@@ -1,4 +1,4 @@
-#include "tests/bench/humanoid_from_mujoco.h"
+#include "tests/support/humanoid_from_mujoco.h"
 
 #include <stdexcept>
 #include <string>

@@ -1,0 +1,231 @@
+// The match's rules as the player meets them, each built directly rather than waited for in a fight: both boxers are
+// handed to the (idle) player, so no AI punch changes the situation, and a boxer is put down by taking its
+// consciousness (the panel's set event) and pushing its chest (a push event), the public input path.
+//  * the knock-out at ten: a downed boxer kept down (its stand-up never starts: MatchTuning::min_down_time past the
+//    count) is counted 1 to 10 on the HUD's banner and loses by KO the tick the count passes count_seconds;
+//  * the neutral corner: a standing opponent within neutral_corner_within of the downed boxer's pelvis when its get-up
+//    starts is sent to its mark; out of that distance it stays where it is;
+//  * points: with no knock-out, the result at the round's end names whoever landed more;
+//  * the HUD's round clock: round number and m:ss left.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "game/hud.h"
+#include "game/interaction/interaction.h"
+#include "game/match/match.h"
+#include "game/world.h"
+
+namespace boxing {
+namespace {
+
+constexpr int kTicksPerSecond = 240;
+
+std::unique_ptr<World> idle_match(double round_seconds = 180.0) {
+  Options o;
+  o.headless = true;
+  o.scenario_id = Scenario::Match;
+  o.scenario = "match";
+  o.seed = 1;
+  o.round_seconds = round_seconds;
+  auto w = make_world(o);
+  EXPECT_TRUE(w) << w.error();
+  if (!w) return nullptr;
+  // Both boxers the player's: neither punches unless commanded (match_command), so nothing but the test acts.
+  for (int k = 0; k < 2; ++k) {
+    InputEvent e;
+    e.kind = InputKind::Set;
+    e.boxer = k;
+    e.control = "player";
+    interaction_submit(**w, e);
+  }
+  return std::move(*w);
+}
+
+void run(World& w, double seconds) {
+  for (int i = 0; i < static_cast<int>(seconds * kTicksPerSecond); ++i) step_world(w);
+}
+
+// Boxer k put down: no consciousness left (the servo's gains and the root assist scale with it) and a push on its
+// chest along `dir` (world, horizontal): 1500 N for 0.2 s, which floors a boxer standing in guard either way (seed
+// 1 at 1 s: down 0.6 s after it pushed away from the opponent, 1.1 s after it pushed toward him; 900 N toward him
+// left it standing). Returns whether the match counted it down (a GetUp opened) within 4 s.
+bool put_down(World& w, int k, const Eigen::Vector3d& dir) {
+  InputEvent out;
+  out.kind = InputKind::Set;
+  out.boxer = k;
+  out.consciousness = 0.0;
+  interaction_submit(w, out);
+  InputEvent push;
+  push.kind = InputKind::Push;
+  push.boxer = k;
+  push.bone = "chest";
+  push.vec = 1500.0 * dir.normalized();
+  push.duration = 0.2;
+  interaction_submit(w, push);
+  for (int i = 0; i < 4 * kTicksPerSecond && w.match->fighter[k].getup < 0; ++i) step_world(w);
+  return w.match->fighter[k].getup >= 0;
+}
+
+// From boxer k's pelvis toward the other's (floor plane).
+Eigen::Vector3d toward_other(const World& w, int k) {
+  const Eigen::Vector3d a = w.data.x[w.boxers[k].bodies.body[0]].p, b = w.data.x[w.boxers[1 - k].bodies.body[0]].p;
+  Eigen::Vector3d d = b - a;
+  d.z() = 0.0;
+  return d.normalized();
+}
+
+double pelvis_distance(const World& w) {
+  return (w.data.x[w.boxers[0].bodies.body[0]].p - w.data.x[w.boxers[1].bodies.body[0]].p).head<2>().norm();
+}
+
+// Boxer k down and kept down (its stand-up would start at min_down_time: moved past the count, it never does): the
+// banner counts "RED DOWN   1" to "RED DOWN   10" (BLUE for boxer 1), one number a second from the knockdown, and the
+// tick the count passes count_seconds the match is over, a KO for the other boxer, shown on the banner and in the
+// report. The boxer still lies there: nothing but the count ended it.
+void knock_out_at_ten(int k) {
+  auto w = idle_match();
+  ASSERT_TRUE(w);
+  World& world = *w;
+  Match& mt = *world.match;
+  mt.tuning.min_down_time = 2.0 * mt.tuning.count_seconds;
+  run(world, 1.0);
+  ASSERT_TRUE(put_down(world, k, -toward_other(world, k))) << "boxer " << k << " did not go down";
+  const double down_at = mt.getups[mt.fighter[k].getup].down_at;
+  const std::string side = k == 0 ? "RED" : "BLUE";
+  std::vector<std::string> banners;
+  double over_at = -1.0;
+  for (int i = 0; i < static_cast<int>((mt.tuning.count_seconds + 1.0) * kTicksPerSecond) && over_at < 0; ++i) {
+    const std::string b = match_hud(world).banner;
+    if (banners.empty() || banners.back() != b) banners.push_back(b);
+    EXPECT_FALSE(mt.over) << "over at " << world.data.time - down_at << " s into the count";
+    step_world(world);
+    if (mt.over) over_at = world.data.time;
+  }
+  std::vector<std::string> count;
+  for (int n = 1; n <= 10; ++n) count.push_back(side + " DOWN   " + std::to_string(n));
+  EXPECT_EQ(banners, count);
+  ASSERT_GE(over_at, 0.0) << "no knock-out " << mt.tuning.count_seconds + 1.0 << " s after the knockdown";
+  // The first tick past the count (kPhysicsDt = 1/240 s): not a tick earlier, not a tick later.
+  EXPECT_GT(over_at - down_at, mt.tuning.count_seconds);
+  EXPECT_LE(over_at - down_at, mt.tuning.count_seconds + 1.0 / kTicksPerSecond + 1e-9);
+  const std::string ko = "KO: boxer " + std::to_string(1 - k) + " wins (boxer " + std::to_string(k) + " not up at 10)";
+  EXPECT_EQ(mt.result, ko);
+  EXPECT_EQ(match_hud(world).banner, ko);
+  EXPECT_EQ(match_report(world)["result"], ko);
+  EXPECT_EQ(world.boxers[k].ctl.state.state, BoxerState::Down);
+  EXPECT_LT(mt.getups[mt.fighter[k].getup].up_at, 0.0);  // never up
+}
+
+TEST(MatchRules, ADownedRedBoxerNotUpAtTheCountOfTenLosesByKnockOut) { knock_out_at_ten(0); }
+TEST(MatchRules, ADownedBlueBoxerNotUpAtTheCountOfTenLosesByKnockOut) { knock_out_at_ten(1); }
+
+// Red put down toward blue; its get-up starts at min_down_time, lying still. Blue, standing within
+// neutral_corner_within of red's pelvis then, is sent to its mark (one reset, of blue only); with the distance set
+// below theirs, the same get-up sends nobody anywhere.
+TEST(MatchRules, AStandingOpponentCloseToAGetUpIsSentToItsMark) {
+  for (const bool near : {true, false}) {
+    SCOPED_TRACE(near ? "within the distance" : "out of it");
+    auto w = idle_match();
+    ASSERT_TRUE(w);
+    World& world = *w;
+    Match& mt = *world.match;
+    run(world, 1.0);
+    ASSERT_TRUE(put_down(world, 0, toward_other(world, 0)));
+    const Boxer& blue = world.boxers[1];
+    int ticks = 0;
+    for (; ticks < 8 * kTicksPerSecond && world.boxers[0].ctl.state.state != BoxerState::GettingUp; ++ticks) {
+      if (!near) mt.tuning.neutral_corner_within = 0.5 * pelvis_distance(world);
+      const int resets = mt.resets;
+      const Eigen::Vector2d red_before = world.data.x[world.boxers[0].bodies.body[0]].p.head<2>();
+      const double apart = pelvis_distance(world);
+      const Eigen::Vector2d blue_off = world.data.x[blue.bodies.body[0]].p.head<2>() - blue.ctl.mark;
+      step_world(world);
+      if (world.boxers[0].ctl.state.state != BoxerState::GettingUp) continue;
+      // The tick the get-up started.
+      ASSERT_EQ(blue.ctl.state.state, BoxerState::Guard);
+      if (near) {
+        ASSERT_LT(apart, mt.tuning.neutral_corner_within) << "red fell " << apart << " m from blue";
+        EXPECT_EQ(mt.resets, resets + 1);
+        // On its mark: the start's placement set again, which is where the mark was taken, so exactly (the referee
+        // runs after the step: nothing has moved it yet). measured: 0 m (0.62 m off before, pushed by red's fall);
+        // bound 1e-9 m.
+        const Eigen::Vector2d off = world.data.x[blue.bodies.body[0]].p.head<2>() - blue.ctl.mark;
+        EXPECT_LT(off.norm(), 1e-9) << "blue " << off.norm() << " m off its mark (" << blue_off.norm() << " before)";
+      } else {
+        EXPECT_EQ(mt.resets, resets);
+      }
+      // Red stays where it lies, not sent anywhere: lying still, its pelvis moved under still_speed for the tick
+      // (0.4 m/s x 1/240 s = 1.7 mm; measured 9e-8 m); a reset would move it by a metre.
+      EXPECT_LT((world.data.x[world.boxers[0].bodies.body[0]].p.head<2>() - red_before).norm(),
+                mt.tuning.still_speed / kTicksPerSecond);
+    }
+    EXPECT_EQ(world.boxers[0].ctl.state.state, BoxerState::GettingUp) << "no get-up in 8 s";
+  }
+}
+
+// A 4 s round with no knock-out: red jabs an idle blue twice (player commands at 2 s), blue throws nothing. At the
+// round's end the report's result is points, for whoever landed more by the match's own count (seed 1: red's first
+// jab lands on the head, 1-0; a jab blocked on the glove would make it a draw, which the same rule says). Then the
+// rule itself, with the counts set: blue ahead names blue, level is a draw.
+TEST(MatchRules, AtTheRoundsEndTheBoxerWhoLandedMoreWinsOnPoints) {
+  auto w = idle_match(4.0);
+  ASSERT_TRUE(w);
+  World& world = *w;
+  Match& mt = *world.match;
+  run(world, 2.0);
+  for (int i = 0; i < 2; ++i) match_command(world, 0, FightCommand::Jab);
+  while (world.data.time < mt.round_seconds) step_world(world);
+  ASSERT_FALSE(mt.over);
+  ASSERT_TRUE(mt.result.empty());
+  EXPECT_GE(mt.fighter[0].thrown, 1);
+  EXPECT_EQ(mt.fighter[1].thrown, 0);
+  const auto points = [](int red, int blue) {
+    const std::string score = std::to_string(red) + "-" + std::to_string(blue) + " landed)";
+    return red == blue ? "draw on points (" + score
+                       : "points: boxer " + std::string(red > blue ? "0" : "1") + " wins (" + score;
+  };
+  const int red = mt.fighter[0].landed, blue = mt.fighter[1].landed;
+  EXPECT_EQ(blue, 0);
+  const nlohmann::json r = match_report(world);
+  EXPECT_EQ(r["round"], 2);  // the round is over
+  EXPECT_EQ(r["result"], points(red, blue)) << red << " landed of " << mt.fighter[0].thrown;
+  std::printf("round of 4 s: red landed %d of %d, blue %d: %s\n", red, mt.fighter[0].thrown, blue,
+              r["result"].get<std::string>().c_str());
+  // The rule, each way (the counts are the match's state; the rule is the report's).
+  mt.fighter[0].landed = 3, mt.fighter[1].landed = 1;
+  EXPECT_EQ(match_report(world)["result"], "points: boxer 0 wins (3-1 landed)");
+  mt.fighter[1].landed = 5;
+  EXPECT_EQ(match_report(world)["result"], "points: boxer 1 wins (3-5 landed)");
+  mt.fighter[1].landed = 3;
+  EXPECT_EQ(match_report(world)["result"], "draw on points (3-3 landed)");
+}
+
+// The HUD's clock: the round and the whole seconds left in it as m:ss, from the match time and --round-seconds.
+TEST(MatchRules, TheHudShowsTheRoundAndTheTimeLeftAsMinutesAndSeconds) {
+  auto w = idle_match(180.0);
+  ASSERT_TRUE(w);
+  World& world = *w;
+  EXPECT_EQ(match_clock_text(match_hud(world)), "ROUND 1   3:00");
+  run(world, 0.5);
+  EXPECT_EQ(match_clock_text(match_hud(world)), "ROUND 1   2:59");  // 179.5 s left: whole seconds
+  // Later in a match: the time set directly (the clock reads only the match time and the round's length).
+  auto at = [&](double t) {
+    world.data.time = t;
+    return match_clock_text(match_hud(world));
+  };
+  EXPECT_EQ(at(61.25), "ROUND 1   1:58");
+  EXPECT_EQ(at(170.0), "ROUND 1   0:10");
+  EXPECT_EQ(at(179.99), "ROUND 1   0:00");
+  EXPECT_EQ(at(180.0), "ROUND 2   3:00");
+  EXPECT_EQ(at(425.0), "ROUND 3   1:55");
+  world.match->round_seconds = 90.0;  // --round-seconds 90
+  EXPECT_EQ(at(30.0), "ROUND 1   1:00");
+  EXPECT_EQ(at(95.0), "ROUND 2   1:25");
+  // No banner while both stand and the fight goes on.
+  EXPECT_EQ(match_hud(world).banner, "");
+}
+
+}  // namespace
+}  // namespace boxing
