@@ -16,6 +16,7 @@
 #include "engine/assets/character.h"
 #include "engine/assets/gltf.h"
 #include "test_paths.h"
+#include "support/ci_env.h"
 
 namespace {
 
@@ -84,7 +85,7 @@ TEST(Content, CommittedFilesAreWhatTheScriptsGenerate) {
   const std::string tmp = (fs::temp_directory_path() / ("content_test_" + std::to_string(::getpid()))).string();
   fs::create_directories(tmp);
   const Proc boxer = run("python3 '" + kRoot + "/scripts/content/make_boxer.py' '" + tmp + "/boxer.gltf'");
-  if (boxer.rc == 127) GTEST_SKIP() << "no python3";
+  if (boxer.rc == 127) BOXING_SKIP_OR_FAIL("no python3 (scripts/deps installs it)");
   ASSERT_EQ(boxer.rc, 0) << boxer.output;
   const Proc clips = run("python3 '" + kRoot + "/scripts/content/make_clips.py' --out '" + tmp + "/clips.gltf'");
   ASSERT_EQ(clips.rc, 0) << clips.output;
@@ -98,7 +99,7 @@ TEST(Content, CommittedFilesAreWhatTheScriptsGenerate) {
 TEST(Content, ViewerGlbIsTheGameFilesMerged) {
   // make_glb.py --check: the committed .glb is byte for byte what the two .gltf files give.
   const Proc check = run("python3 '" + kRoot + "/scripts/content/make_glb.py' --check");
-  if (check.rc == 127) GTEST_SKIP() << "no python3";
+  if (check.rc == 127) BOXING_SKIP_OR_FAIL("no python3 (scripts/deps installs it)");
   EXPECT_EQ(check.rc, 0) << check.output;
 
   auto glb = eng::assets::load_gltf(kRoot + "/content/boxer/boxer.glb");

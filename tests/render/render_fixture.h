@@ -9,6 +9,7 @@
 #include "engine/ui/ui.h"
 #include "imgui.h"
 #include "support/vulkan_test_env.h"
+#include "support/ci_env.h"
 
 namespace render_test {
 
@@ -48,7 +49,7 @@ inline std::unique_ptr<eng::render::Renderer> make_renderer(int w, int h, std::s
   std::string var##_skip;                                     \
   auto var = render_test::make_renderer(cfg, &var##_skip);    \
   if (!var) {                                                 \
-    if (!var##_skip.empty()) GTEST_SKIP() << var##_skip;      \
+    if (!var##_skip.empty()) BOXING_SKIP_OR_FAIL(var##_skip);      \
     return;                                                   \
   }
 #define MAKE_RENDERER_OR_RETURN(var, w, h) MAKE_RENDERER_WITH_OR_RETURN(var, (eng::render::RendererConfig{w, h}))
