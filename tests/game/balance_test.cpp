@@ -85,15 +85,53 @@ boxing::BoxerMetrics push_feet_on_edge(const char* seed, const char* dir, const 
   return b.metrics;
 }
 
-// Yin's push to the right, 394 N.
-std::unique_ptr<boxing::World> right_push_world(const char* seed) { return push_world(seed, "270", "394"); }
-
 // Steps `world` for `seconds` of simulated time, calling `each` after every step while boxer 0 is on its feet.
 void step_while_up(boxing::World& world, double seconds, const std::function<void()>& each) {
   for (int i = 0; i < int(seconds / boxing::kPhysicsDt); ++i) {
     boxing::step_world(world);
     if (!world.boxers[0].metrics.fell) each();
   }
+}
+
+// A situation that arises on some seeds and not others (a crossed stance, a foot on an edge): over seeds lo..hi,
+// `check(seed, &shown)` sets shown when the seed brings the situation about (the contrast run: the mechanism off, or
+// the situation looked for) and returns why the mechanism failed there (empty: it passed; a seed that does not show
+// the situation passes unless a check that holds on every seed failed). The rate's `shown` lists the seeds that
+// showed it: a test requires enough of them, or it shows nothing.
+struct ShownRate {
+  seed_rate::Rate r;
+  std::vector<int> shown;
+  std::string shown_list() const {
+    std::string s;
+    for (int seed : shown) s += " " + std::to_string(seed);
+    return s.empty() ? " none" : s;
+  }
+  // At least `need` seeds showed the situation, and the mechanism failed on at most `fails` seeds.
+  ::testing::AssertionResult at_least(int need, int fails) const {
+    if (int(shown.size()) < need)
+      return ::testing::AssertionFailure() << r.what << ": the situation arose on seeds" << shown_list() << " of "
+                                           << r.lo << "-" << r.hi << ", at least " << need << " required"
+                                           << r.failures();
+    return r.at_least(r.seeds() - fails);
+  }
+};
+
+ShownRate over_seeds_shown(const std::string& what, int lo, int hi, const std::function<std::string(int, bool*)>& check) {
+  ShownRate s;
+  s.r = seed_rate::over_seeds(what, lo, hi, [&](int seed) {
+    bool shown = false;
+    std::string why = check(seed, &shown);
+    if (shown) s.shown.push_back(seed);
+    std::printf("[seed_rate] %s, seed %d: the situation %s\n", what.c_str(), seed, shown ? "arose" : "did not arise");
+    return why;
+  });
+  std::printf("[seed_rate] %s: the situation arose on seeds%s\n", what.c_str(), s.shown_list().c_str());
+  return s;
+}
+
+// push_world's push, by seed number.
+std::unique_ptr<boxing::World> push_world(int seed, const char* dir, const char* force) {
+  return push_world(std::to_string(seed).c_str(), dir, force);
 }
 
 class PushFromEveryDirection : public ::testing::TestWithParam<std::string> {};
@@ -335,58 +373,88 @@ TEST(Drill, AClipsOwnLungeIsGivenByTheSolesNotBoughtFromTheRootAssist) {
   EXPECT_TRUE(r.all());
 }
 
-// (Still a situation found on one seed, not yet brought about directly: docs/decisions/test-bounds.md, "Left".)
 TEST(GraphWalk, CarriedFootworkMovesTheFeetWhereTheShuffleDragsThem) {
   // --footwork carry (the default; step_planner.h): the clips' steps swing on their own path to where the clip puts
-  // the foot relative to the stance foot. Walk seed 10, 20 s: the shuffle's pressed soles cover 26% of the clips'
-  // travel, the carried steps 70% (more than the clip's own on some steps: a foothold on the next crate, or the
-  // stance restored to the clip's; none on a step the gate holds for the weight shift; 6 more, their landing where
-  // the foot stood, not taken), and the walk stands on an assist rms of 30 N m (29 shuffling).
-  const auto shuffle = run({"--scenario", "graph-walk", "--seed", "10", "--footwork", "shuffle"}, 20.0);
-  const auto carried = run({"--scenario", "graph-walk", "--seed", "10"}, 20.0);
-  EXPECT_FALSE(carried.fell) << "fell at " << carried.fell_at << " s (" << carried.fell_reason << ")";
-  ASSERT_GE(shuffle.step_travel_count, 5);
-  ASSERT_GE(carried.step_travel_count, 5);
-  const double shuffled = shuffle.step_travel_sum / shuffle.step_travel_count;
-  const double carry = carried.step_travel_sum / carried.step_travel_count;
-  EXPECT_LT(shuffled, 0.3);
-  EXPECT_GT(carry, 0.4);
-  ASSERT_GT(carried.time_upright, 0.0);
-  EXPECT_LT(std::sqrt(carried.root_torque_sq_dt / carried.time_upright), 45.0);
+  // the foot relative to the stance foot; the shuffle (--footwork shuffle) drags the pressed soles. A seed passes
+  // when, over kWalkSeconds of the walk, the shuffle's soles cover under 30% of the clips' travel, the carried steps
+  // over 40%, and the carried walk stands on an assist rms under 45 N m (walk seed 10 before: 26%, 70%, 30 N m), both
+  // walks with at least 5 steps. measured (seeds 1-6, 15 s): 3 of 6 (seeds 1, 4, 5: under 5 steps in 15 s; on 2, 3, 6
+  // shuffled 0.28-0.29, carried 0.70-0.93, rms 15-33 N m); require 2 of 6: one seed may move.
+  constexpr double kWalkSeconds = 15.0;
+  const seed_rate::Rate r = seed_rate::over_seeds("graph walk, carried vs shuffled feet", 1, 6, [](int seed) {
+    const std::string sd = std::to_string(seed);
+    const auto shuffle = run({"--scenario", "graph-walk", "--seed", sd, "--footwork", "shuffle"}, kWalkSeconds);
+    const auto carried = run({"--scenario", "graph-walk", "--seed", sd}, kWalkSeconds);
+    seed_rate::Why why;
+    why.check(!carried.fell, "carried: " + fell_why(carried));
+    if (shuffle.step_travel_count < 5 || carried.step_travel_count < 5 || carried.time_upright <= 0.0)
+      return why.check(false, "too few steps: " + std::to_string(shuffle.step_travel_count) + " shuffled, " +
+                                  std::to_string(carried.step_travel_count) + " carried").str();
+    const double shuffled = shuffle.step_travel_sum / shuffle.step_travel_count;
+    const double carry = carried.step_travel_sum / carried.step_travel_count;
+    const double rms = std::sqrt(carried.root_torque_sq_dt / carried.time_upright);
+    std::printf("  seed %d: travel shuffled %.2f, carried %.2f; carried assist rms %.1f N m\n", seed, shuffled, carry, rms);
+    why.check(shuffled < 0.3, "shuffled soles covered " + std::to_string(shuffled) + " of the travel");
+    why.check(carry > 0.4, "carried steps covered " + std::to_string(carry) + " of the travel");
+    why.check(rms < 45.0, "carried: assist rms " + std::to_string(rms) + " N m");
+    return why.str();
+  });
+  EXPECT_TRUE(r.at_least(2));
 }
 
-// (Still a situation found on one seed, not yet brought about directly: docs/decisions/test-bounds.md, "Left".)
 TEST(GraphWalk, ACarriedStepWhoseLandingIsWhereTheFootStandsIsNotTaken) {
   // The carried landing is relative to the stance foot; when the feet already stand as the clip ends, it is where the
-  // foot is, and the foot was lifted and put back within 2 cm (a boxer marking time: 40% of the walks' clip steps).
-  // Walk seed 21, 30 s: with StepTuning::carry_in_place off, steps land in place; with it (the default) those steps
-  // are not taken and none lands in place.
-  const auto marking_time = run({"--scenario", "graph-walk", "--seed", "21"}, 30.0,
-                                 [](boxing::BoxerTuning& t) { t.step.carry_in_place = 0.0; });
-  const auto m = run({"--scenario", "graph-walk", "--seed", "21"}, 30.0);
-  EXPECT_GT(marking_time.steps_landed_in_place, 0);
-  EXPECT_EQ(marking_time.steps_in_place, 0);
-  EXPECT_FALSE(m.fell) << "fell at " << m.fell_at << " s (" << m.fell_reason << ")";
-  EXPECT_GT(m.steps_in_place, 0);
-  EXPECT_EQ(m.steps_landed_in_place, 0);
-  EXPECT_GE(m.step_travel_count, 3);  // the steps that go somewhere are still taken
+  // foot is, and the foot was lifted and put back within 2 cm (a boxer marking time). With StepTuning::carry_in_place
+  // off, such steps land in place (the situation: a seed shows it when one does); with it (the default) those steps
+  // are not taken (steps_in_place) and none lands in place, the boxer stands, and the steps that go somewhere are
+  // still taken (3 or more). (Walk seed 21, 30 s, was the one named.) measured (seeds 1-6, 15 s): steps landed in
+  // place with it off on seeds 5 and 6; with it none on any seed, 1-4 steps not taken there; seed 5 fails (1 step
+  // travelled). require: the situation on at least 1 seed, at most 2 seeds failing (1 measured; one may move).
+  constexpr double kWalkSeconds = 15.0;
+  const ShownRate s = over_seeds_shown("graph walk, steps marking time", 1, 6, [](int seed, bool* shown) {
+    const std::string sd = std::to_string(seed);
+    const auto marking_time = run({"--scenario", "graph-walk", "--seed", sd}, kWalkSeconds,
+                                   [](boxing::BoxerTuning& t) { t.step.carry_in_place = 0.0; });
+    const auto m = run({"--scenario", "graph-walk", "--seed", sd}, kWalkSeconds);
+    std::printf("  seed %d: off: %d landed in place, %d not taken; on: %d landed in place, %d not taken, %d travelled\n",
+                seed, marking_time.steps_landed_in_place, marking_time.steps_in_place, m.steps_landed_in_place,
+                m.steps_in_place, m.step_travel_count);
+    *shown = marking_time.steps_landed_in_place > 0;
+    seed_rate::Why why;
+    why.check(marking_time.steps_in_place == 0, "off: " + std::to_string(marking_time.steps_in_place) + " not taken");
+    why.check(!m.fell, fell_why(m));
+    why.check(m.steps_landed_in_place == 0, std::to_string(m.steps_landed_in_place) + " landed in place");
+    why.check(m.step_travel_count >= 3, "only " + std::to_string(m.step_travel_count) + " steps travelled");
+    if (*shown) why.check(m.steps_in_place > 0, "no step left untaken");
+    return why.str();
+  });
+  EXPECT_TRUE(s.at_least(1, 2));
 }
 
-// (Still a situation found on one seed, not yet brought about directly: docs/decisions/test-bounds.md, "Left".)
 TEST(Drill, ACarriedStepHeldForItsWeightShiftIsStillTheClipsWholeStep) {
   // The gate holds a carried step down until the capture point allows it (the weight shift) while the clip plays on.
   // Judged by what was left of the clip's step when it opened, a step_forward rear step kept a few cm of its 16 and a
   // few hundredths of a second to its touch-down: not carried, too late to swing, skipped (StepTuning::carry_whole
-  // off). Lifted as the clip's whole step (the default), it is taken. Seed 30's drill, 10 s: 4 steps taken and 1
-  // skipped with it off, 5 and none with it on.
-  const std::vector<std::string> drill = {"--scenario", "stand", "--seed", "30", "--clip", "step_forward"};
-  const auto left = run(drill, 10.0, [](boxing::BoxerTuning& t) { t.step.carry_whole = false; });
-  const auto m = run(drill, 10.0);
-  EXPECT_GE(left.steps_skipped, 1);
-  EXPECT_EQ(m.steps_skipped, 0);
-  EXPECT_GT(m.steps_taken, left.steps_taken);           // the held step lifts ...
-  EXPECT_GT(m.step_travel_count, left.step_travel_count);  // ... and goes somewhere
-  EXPECT_FALSE(m.fell) << "fell at " << m.fell_at << " s (" << m.fell_reason << ")";
+  // off: the situation, a seed shows it when a step is skipped). Lifted as the clip's whole step (the default), it is
+  // taken: no step skipped on any seed, and the boxer up. The step_forward drill, 10 s. (Seed 30 was the one named: 4
+  // taken and 1 skipped off, 5 and none on.) measured (seeds 1-8): skips with it off on seeds 3, 5, 7 (2, 3, 2); none
+  // with it on, on 8 of 8. require: skips off on at least 2 seeds, none on on 7 of 8 (one seed may move). (On seeds
+  // 3, 5, 7 the steps taken are the same both ways, 3, 1, 3: seed 30's "one more taken" does not hold over the range,
+  // so it is not asserted.)
+  const ShownRate s = over_seeds_shown("step_forward drill, held steps", 1, 8, [](int seed, bool* shown) {
+    const std::vector<std::string> drill = {"--scenario", "stand", "--seed", std::to_string(seed), "--clip", "step_forward"};
+    const auto left = run(drill, 10.0, [](boxing::BoxerTuning& t) { t.step.carry_whole = false; });
+    const auto m = run(drill, 10.0);
+    std::printf("  seed %d: off: %d taken, %d skipped, %d travelled; on: %d taken, %d skipped, %d travelled\n", seed,
+                left.steps_taken, left.steps_skipped, left.step_travel_count, m.steps_taken, m.steps_skipped,
+                m.step_travel_count);
+    *shown = left.steps_skipped >= 1;
+    seed_rate::Why why;
+    why.check(m.steps_skipped == 0, std::to_string(m.steps_skipped) + " skipped");
+    why.check(!m.fell, fell_why(m));
+    return why.str();
+  });
+  EXPECT_TRUE(s.at_least(2, 1));
 }
 
 }  // namespace
@@ -618,31 +686,41 @@ TEST(FootSlide, TheCrossDrillsRearFootStaysPlantedWithTheAnkleLimitsInThePlan) {
   EXPECT_GE(slid, 1) << "unplanned, the rear foot slid no more than planned on seeds" << stayed;
 }
 
-// (Still a situation found on one seed, not yet brought about directly: docs/decisions/test-bounds.md, "Left".)
 TEST(BalanceSteps, AStanceTheRecoveryLeftCrossedReturnsToOneTheBoxerCanFightFrom) {
-  // 394 N x 0.2 s to the right, seed 16: the lead (left) foot crosses over to land 0.5 m right of the rear one, the
-  // rear foot follows, and the recovery settles with the feet crossed, the legs through each other. Yin's third
-  // phase, the return step, first shifts the weight over one foot, then swings the other back to its guard place
-  // relative to it. The foot that moved last, as the return used to choose, stood under the com: its weight shift
-  // went the long way and was given up after 2.5 s, and the boxer stood cross-legged to the end (5.4 s of the legs
-  // through each other). The foot farther from the com returns now: one return step, and the boxer ends in a stance
-  // it can fight from, its legs apart after it.
-  const std::unique_ptr<boxing::World> w = right_push_world("16");
-  ASSERT_TRUE(w);
-  boxing::World& world = *w;
-  bool crossed = false;
-  for (int i = 0; i < int(8.0 / boxing::kPhysicsDt); ++i) {
-    boxing::step_world(world);
-    crossed = crossed || !boxing::stance_can_fight(world.data, world.boxers[0]);
-  }
-  const boxing::BoxerMetrics& m = world.boxers[0].metrics;
-  EXPECT_TRUE(crossed);
-  EXPECT_GE(m.balance_steps, 1);
-  EXPECT_EQ(m.return_steps, 1);
-  EXPECT_EQ(m.late_landings, 0);
-  EXPECT_FALSE(m.fell) << "fell at " << m.fell_at << " s (" << m.fell_reason << ")";
-  EXPECT_TRUE(boxing::stance_can_fight(world.data, world.boxers[0]));
-  EXPECT_LT(m.legs_overlap_s, 4.0);
+  // 394 N x 0.2 s to the right, 8 s: on some seeds the lead (left) foot crosses over to land right of the rear one
+  // and the recovery settles with the feet crossed (the situation: the stance, stance_can_fight, crossed at some
+  // tick). Yin's third phase, the return step, first shifts the weight over one foot, then swings the other back to
+  // its guard place relative to it. The foot that moved last, as the return used to choose, stood under the com: its
+  // weight shift went the long way and was given up after 2.5 s, and the boxer stood cross-legged to the end (seed 16:
+  // 5.4 s of the legs through each other). The foot farther from the com returns now: where the feet crossed, no
+  // landing is late, the boxer stands and ends in a stance it can fight from, its legs through each other under 4 s.
+  // measured (seeds 1-16, 8 s): the stance crossed at some tick on all 16; 12 of 16 pass (1, 5, 8: no return step by
+  // 8 s, cannot fight; 15: fell at 3.4 s, a late landing); legs through each other at most 1.67 s (seed 13). require
+  // 11 of 16 (one seed may move) and the crossing on at least 15.
+  const ShownRate s = over_seeds_shown("right push 394 N, a crossed stance", 1, 16, [](int seed, bool* shown) {
+    const std::unique_ptr<boxing::World> w = push_world(seed, "270", "394");
+    if (!w) return std::string("no world");
+    boxing::World& world = *w;
+    bool crossed = false;
+    for (int i = 0; i < int(8.0 / boxing::kPhysicsDt); ++i) {
+      boxing::step_world(world);
+      crossed = crossed || !boxing::stance_can_fight(world.data, world.boxers[0]);
+    }
+    const boxing::BoxerMetrics& m = world.boxers[0].metrics;
+    const bool can_fight = boxing::stance_can_fight(world.data, world.boxers[0]);
+    std::printf("  seed %d: crossed %d, %d balance / %d return steps, late %d, legs through %.2f s, can fight at 8 s %d%s\n",
+                seed, crossed, m.balance_steps, m.return_steps, m.late_landings, m.legs_overlap_s, can_fight,
+                m.fell ? ", fell" : "");
+    *shown = crossed;
+    seed_rate::Why why;
+    if (!crossed) return why.str();
+    why.check(!m.fell, fell_why(m));
+    why.check(m.late_landings == 0, std::to_string(m.late_landings) + " late landings");
+    why.check(can_fight, "ended in a stance it cannot fight from");
+    why.check(m.legs_overlap_s < 4.0, "legs through each other " + std::to_string(m.legs_overlap_s) + " s");
+    return why.str();
+  });
+  EXPECT_TRUE(s.at_least(15, 5));
 }
 
 TEST(BalanceSteps, AReturnStepLandsWhereItWasPlanned) {
@@ -689,60 +767,75 @@ TEST(BalanceSteps, AReturnStepLandsWhereItWasPlanned) {
   EXPECT_GE(closer, 2) << closer << " of " << misses.size() << " closer fed forward:" << failed;
 }
 
-// (Still a situation found on one seed, not yet brought about directly: docs/decisions/test-bounds.md, "Left".)
 TEST(BalanceSteps, AFootTheRecoveryLeftOnAnEdgeIsRePlacedOntoAGoodFoothold) {
-  // Yin's forward push (413 N x 0.2 s) on seeds 5 and 7, and the left one (394 N) on seed 1, 10 s: each recovery ends
-  // in a stance the boxer can fight from (no return step) with one sole over a crate's edge (by the clips' foothold
-  // margins, on_poor_foothold). With the re-placement that foot steps onto the nearest good foothold (the weight
-  // shift, then a return step landing within a centimetre): both feet well placed at the end. Without it the foot
-  // stays on the edge.
-  const std::pair<const char*, const char*> pushes[] = {{"5", "0"}, {"7", "0"}, {"1", "90"}};
-  for (const auto& [seed, dir] : pushes) {
+  // Yin's forward push (413 N x 0.2 s), 10 s: on some seeds the recovery ends in a stance the boxer can fight from (no
+  // return step) with one sole over a crate's edge (by the clips' foothold margins, on_poor_foothold): the situation,
+  // shown with the re-placement off (BalanceStepTuning::replace_edge_foot) when the boxer stands with no return step
+  // and a foot on an edge at the end. With the re-placement that foot steps onto the nearest good foothold (the weight
+  // shift, then a return step): both feet well placed at the end, one re-placement, the boxer up. (Seeds 5 and 7 of the
+  // forward push and 1 of the left one were the ones named.) measured (seeds 1-8): a foot left on an edge on seeds 5
+  // and 7, re-placed on both; 8 of 8 pass. require: the situation on at least 1 seed, at most 1 failing.
+  const ShownRate s = over_seeds_shown("forward push 413 N, a foot left on an edge", 1, 8, [](int seed, bool* shown) {
     const auto push = [&](bool replace, int* on_edge) {
-      return push_feet_on_edge(seed, dir, std::string(dir) == "0" ? "413" : "394", 10.0, [replace](auto& t) {
+      return push_feet_on_edge(std::to_string(seed).c_str(), "0", "413", 10.0, [replace](auto& t) {
         EXPECT_TRUE(t.replace_edge_foot);  // as built
         t.replace_edge_foot = replace;
       }, on_edge);
     };
     int edge_with = -1, edge_without = -1;
     const boxing::BoxerMetrics with = push(true, &edge_with), without = push(false, &edge_without);
-    std::printf("seed %s, push %s deg: feet on an edge at 10 s: %d (re-placed), %d (not)\n", seed, dir, edge_with,
-                edge_without);
-    EXPECT_FALSE(with.fell) << "seed " << seed << ": fell at " << with.fell_at << " s (" << with.fell_reason << ")";
-    EXPECT_FALSE(without.fell) << "seed " << seed;
-    EXPECT_EQ(with.replacements, 1) << "seed " << seed;
-    EXPECT_EQ(without.return_steps, 0) << "seed " << seed;
-    EXPECT_EQ(edge_with, 0) << "seed " << seed;
-    EXPECT_GE(edge_without, 1) << "seed " << seed;
-  }
+    std::printf("  seed %d: feet on an edge at 10 s: %d (re-placed, %d re-placements%s), %d (not, %d return steps%s)\n",
+                seed, edge_with, with.replacements, with.fell ? ", fell" : "", edge_without, without.return_steps,
+                without.fell ? ", fell" : "");
+    *shown = !without.fell && without.return_steps == 0 && edge_without >= 1;
+    seed_rate::Why why;
+    if (!*shown) return why.str();
+    why.check(!with.fell, fell_why(with));
+    why.check(with.replacements >= 1, "no re-placement");
+    why.check(edge_with == 0, std::to_string(edge_with) + " feet on an edge at the end");
+    return why.str();
+  });
+  EXPECT_TRUE(s.at_least(1, 1));
 }
 
-// (Still a situation found on one seed, not yet brought about directly: docs/decisions/test-bounds.md, "Left".)
 TEST(BalanceSteps, AReturnThatLandsOnAnEdgeIsFollowedByARePlacement) {
-  // Yin's left push (394 N x 0.2 s) on seed 4 and the right one on seed 6, 14 s: each recovery ends in a return step
-  // that comes down with a sole over a crate's edge (on_poor_foothold). With the follow-up (BalanceStepTuning::
-  // follow_ups) the feet are looked at again once the body settles after it, and that foot is re-placed: both feet
-  // well placed at the end. Without it the foot stays on the edge.
-  const std::pair<const char*, const char*> pushes[] = {{"4", "90"}, {"6", "270"}};
-  for (const auto& [seed, dir] : pushes) {
-    const auto push = [&](int follow_ups, int* on_edge) {
-      return push_feet_on_edge(seed, dir, "394", 14.0, [follow_ups](auto& t) {
-        EXPECT_GE(t.follow_ups, 1);  // as built
-        t.follow_ups = follow_ups;
-      }, on_edge);
-    };
-    int edge_with = -1, edge_without = -1;
-    const boxing::BoxerMetrics with = push(4, &edge_with), without = push(0, &edge_without);
-    std::printf("seed %s, push %s deg: feet on an edge at 14 s: %d (followed up), %d (not)\n", seed, dir, edge_with,
-                edge_without);
-    EXPECT_FALSE(with.fell) << "seed " << seed << ": fell at " << with.fell_at << " s (" << with.fell_reason << ")";
-    EXPECT_FALSE(without.fell) << "seed " << seed;
-    EXPECT_EQ(without.replacements, 0) << "seed " << seed;
-    EXPECT_GE(without.return_steps, 1) << "seed " << seed;
-    EXPECT_GE(with.replacements, 1) << "seed " << seed;
-    EXPECT_EQ(edge_with, 0) << "seed " << seed;
-    EXPECT_GE(edge_without, 1) << "seed " << seed;
-  }
+  // Yin's left and right pushes (394 N x 0.2 s), 14 s: on some seeds the recovery ends in a return step that comes
+  // down with a sole over a crate's edge (on_poor_foothold): the situation, shown with the follow-up off
+  // (BalanceStepTuning::follow_ups 0) when the boxer stands after a return step with a foot on an edge at the end.
+  // With the follow-up the feet are looked at again once the body settles after it, and that foot is re-placed: both
+  // feet well placed at the end, the boxer up; on every push, no more feet on an edge than without the follow-up.
+  // (Seed 4's left push and seed 6's right one were the ones named.) measured (seeds 1-7, both pushes): the situation on
+  // 3 left, 4 left, 4 right, 6 right, 7 left; fixed on 4 left, 6 right, 7 left; 3 left and 4 right end with 1 and 2
+  // feet on an edge either way (the follow-up re-placed and the foot landed on an edge again): seeds 3, 4 fail, 5 of 7
+  // pass. require: the situation on at least 3 seeds, at most 3 failing (2 measured, one may move).
+  const ShownRate s = over_seeds_shown("left and right pushes 394 N, a return onto an edge", 1, 7,
+                                       [](int seed, bool* shown) {
+    seed_rate::Why why;
+    for (const char* dir : {"90", "270"}) {
+      const auto push = [&](int follow_ups, int* on_edge) {
+        return push_feet_on_edge(std::to_string(seed).c_str(), dir, "394", 14.0, [follow_ups](auto& t) {
+          EXPECT_GE(t.follow_ups, 1);  // as built
+          t.follow_ups = follow_ups;
+        }, on_edge);
+      };
+      int edge_with = -1, edge_without = -1;
+      const boxing::BoxerMetrics with = push(boxing::BoxerTuning{}.balance_step.follow_ups, &edge_with),
+                                 without = push(0, &edge_without);
+      std::printf("  seed %d, push %s deg: feet on an edge at 14 s: %d (followed up, %d re-placements%s), %d (not, %d "
+                  "return steps, %d re-placements%s)\n",
+                  seed, dir, edge_with, with.replacements, with.fell ? ", fell" : "", edge_without, without.return_steps,
+                  without.replacements, without.fell ? ", fell" : "");
+      const std::string at = std::string("toward ") + dir + " deg: ";
+      why.check(with.fell || edge_with <= edge_without, at + "more feet on an edge with the follow-up");
+      if (without.fell || without.return_steps < 1 || edge_without < 1) continue;
+      *shown = true;
+      why.check(!with.fell, at + fell_why(with));
+      why.check(with.replacements >= 1, at + "no re-placement");
+      why.check(edge_with == 0, at + std::to_string(edge_with) + " feet on an edge at the end");
+    }
+    return why.str();
+  });
+  EXPECT_TRUE(s.at_least(3, 3));
 }
 
 TEST(BalanceSteps, AStandingBoxerTakesNoneAndItsLegsNeverTouch) {
@@ -761,13 +854,15 @@ TEST(BalanceSteps, AStandingBoxerTakesNoneAndItsLegsNeverTouch) {
   EXPECT_TRUE(r.all());
 }
 
-// (Still a situation found on one seed, not yet brought about directly: docs/decisions/test-bounds.md, "Left".)
 TEST(BalanceSteps, ACrossOversThighsHoldEachOtherOffWhereTheyPassedThroughEachOther) {
-  // 394 N x 0.2 s to the right, seed 3: the left foot crosses over and the feet end crossed 0.4-0.5 m. With the thighs
-  // not colliding (as every leg geom was until the fourteenth round, docs/decisions/balance-steps.md), they stood in
-  // an X 13 cm deep. Colliding (add_boxer), they touch and stay within the contact's own penetration; the boxer stands.
-  const auto deepest_thighs = [](bool collide, boxing::BoxerMetrics* out) {
-    const std::unique_ptr<boxing::World> w = right_push_world("3");
+  // 394 N x 0.2 s to the right, 8 s: on some seeds the left foot crosses over and the feet end crossed. With the
+  // thighs not colliding (as every leg geom was until the fourteenth round, docs/decisions/balance-steps.md), they
+  // stood in an X over 8 cm deep (the situation; seed 3, the one named: 13 cm). Colliding (add_boxer), they touch and
+  // stay within the contact's own penetration (1.5 cm) and the boxer stands. Not colliding they never touch (every
+  // seed). measured (seeds 1-13): crossed over 8 cm passing on seeds 3, 11, 13 (13.0, 9.6, 11.2 cm), colliding at most
+  // 0.4 cm on every seed; 13 of 13 pass. require: the situation on at least 2 seeds, at most 1 failing.
+  const auto deepest_thighs = [](int seed, bool collide, boxing::BoxerMetrics* out) {
+    const std::unique_ptr<boxing::World> w = push_world(seed, "270", "394");
     if (!w) return 0.0;
     boxing::World& world = *w;
     const boxing::Boxer& b = world.boxers[0];
@@ -787,52 +882,69 @@ TEST(BalanceSteps, ACrossOversThighsHoldEachOtherOffWhereTheyPassedThroughEachOt
     *out = b.metrics;
     return deepest;
   };
-  boxing::BoxerMetrics colliding, passing;
-  const double held = deepest_thighs(true, &colliding), passed = deepest_thighs(false, &passing);
-  std::printf("thighs through each other at most: colliding %.3f m (touching %.2f s), passing %.3f m\n", held,
-              colliding.thighs_touch_s, passed);
-  EXPECT_GT(passed, 0.08);
-  EXPECT_EQ(passing.thighs_touch_s, 0.0);
-  EXPECT_LT(held, 0.015);
-  EXPECT_GT(colliding.thighs_touch_s, 0.5);
-  EXPECT_FALSE(colliding.fell) << "fell at " << colliding.fell_at << " s (" << colliding.fell_reason << ")";
-  EXPECT_GE(colliding.balance_steps, 2);
+  const ShownRate s = over_seeds_shown("right push 394 N, thighs crossing", 1, 13, [&](int seed, bool* shown) {
+    boxing::BoxerMetrics colliding, passing;
+    const double held = deepest_thighs(seed, true, &colliding), passed = deepest_thighs(seed, false, &passing);
+    std::printf("  seed %d: thighs through each other at most: colliding %.3f m (touching %.2f s%s), passing %.3f m\n",
+                seed, held, colliding.thighs_touch_s, colliding.fell ? ", fell" : "", passed);
+    seed_rate::Why why;
+    why.check(passing.thighs_touch_s == 0.0, "passing, the thighs touched");
+    *shown = passed > 0.08;
+    if (!*shown) return why.str();
+    why.check(held < 0.015, "colliding, through each other " + std::to_string(held) + " m");
+    why.check(colliding.thighs_touch_s > 0.0, "colliding, the thighs never touched");
+    why.check(!colliding.fell, fell_why(colliding));
+    return why.str();
+  });
+  EXPECT_TRUE(s.at_least(2, 1));
 }
 
-// (Still a situation found on one seed, not yet brought about directly: docs/decisions/test-bounds.md, "Left".)
 TEST(BalanceSteps, TheLegClearanceKeepsACrossedStancesLegsOutOfEachOther) {
-  // 394 N x 0.2 s to the left, seed 7, for 14 s: the recovery crosses the feet, and without the balance QP's leg
-  // clearance (BalanceQpTuning::leg_clearance_weight 0) the legs stood through each other by over 1 cm for 2.3 s and
-  // the thighs pressed together for 6.4 s. With it the plan holds them apart: no overlap, the thighs touch about a
-  // second, and the boxer stands either way.
-  const auto left_push = [](double weight) {
-    return run({"--scenario", "push", "--seed", "7", "--push-dir", "90", "--push-force", "394", "--push-duration", "0.2",
-                "--push-at", "2", "--stepping", "on"},
-               14.0, [&](boxing::BoxerTuning& t) {
-                 EXPECT_GT(t.qp.leg_clearance_weight, 0.0);  // as built
-                 t.qp.leg_clearance_weight = weight;
-               });
-  };
-  const boxing::BoxerMetrics off = left_push(0.0), on = left_push(boxing::BalanceQpTuning{}.leg_clearance_weight);
-  std::printf("legs through each other over 1 cm: %.2f s (clearance), %.2f s (none); thighs touching %.2f s, %.2f s\n",
-              on.legs_overlap_s, off.legs_overlap_s, on.thighs_touch_s, off.thighs_touch_s);
-  EXPECT_GT(off.legs_overlap_s, 1.0);
-  EXPECT_LT(on.legs_overlap_s, 0.1);
-  EXPECT_LT(on.thighs_touch_s, 0.5 * off.thighs_touch_s);
-  EXPECT_FALSE(on.fell) << "fell at " << on.fell_at << " s (" << on.fell_reason << ")";
-  EXPECT_GE(on.balance_steps, 2);
+  // 394 N x 0.2 s to the left, 14 s: on some seeds the recovery crosses the feet, and without the balance QP's leg
+  // clearance (BalanceQpTuning::leg_clearance_weight 0) the legs stand through each other by over 1 cm, or the
+  // thighs press together, for over a second (the situation; seed 7, the one named: 2.3 s, the thighs 6.4 s). With it
+  // the plan holds them apart: under 0.1 s of overlap, the thighs touching under half as long, and the boxer stands.
+  // measured (seeds 1-8): the situation on seeds 2 (thighs 2.68 s, 0.01 with it) and 7 (legs 1.50 s, thighs 4.32 s;
+  // 0.00 and 0.23 with it); 8 of 8 pass. require: the situation on at least 1 seed, at most 1 failing.
+  const ShownRate s = over_seeds_shown("left push 394 N, the leg clearance", 1, 8, [](int seed, bool* shown) {
+    const auto left_push = [&](double weight) {
+      return run({"--scenario", "push", "--seed", std::to_string(seed), "--push-dir", "90", "--push-force", "394",
+                  "--push-duration", "0.2", "--push-at", "2", "--stepping", "on"},
+                 14.0, [&](boxing::BoxerTuning& t) {
+                   EXPECT_GT(t.qp.leg_clearance_weight, 0.0);  // as built
+                   t.qp.leg_clearance_weight = weight;
+                 });
+    };
+    const boxing::BoxerMetrics off = left_push(0.0), on = left_push(boxing::BalanceQpTuning{}.leg_clearance_weight);
+    std::printf("  seed %d: legs through each other over 1 cm: %.2f s (clearance), %.2f s (none); thighs touching %.2f s, "
+                "%.2f s%s\n", seed, on.legs_overlap_s, off.legs_overlap_s, on.thighs_touch_s, off.thighs_touch_s,
+                on.fell ? "; fell with the clearance" : "");
+    *shown = off.legs_overlap_s > 1.0 || off.thighs_touch_s > 1.0;
+    seed_rate::Why why;
+    if (!*shown) return why.str();
+    why.check(on.legs_overlap_s < 0.1, "legs through each other " + std::to_string(on.legs_overlap_s) + " s");
+    why.check(on.thighs_touch_s < 0.5 * off.thighs_touch_s, "thighs touching " + std::to_string(on.thighs_touch_s) + " s");
+    why.check(!on.fell, fell_why(on));
+    return why.str();
+  });
+  EXPECT_TRUE(s.at_least(1, 1));
 }
 
-// (Still a situation found on one seed, not yet brought about directly: docs/decisions/test-bounds.md, "Left".)
 TEST(BalanceSteps, AReturnThatWouldStepOffThePlatformIsTakenByTheOtherFoot) {
-  // 394 N x 0.2 s to the right, seed 3: a second recovery leaves the right foot 0.1 m from the platform's edge, and its
-  // return (where the stance has it relative to the left foot) lands on the floor, 0.36 m below its crate. The boxer
-  // then stood in a long lunge across the edge and fell at 9.8 s. The left foot returns instead, onto its crate.
-  // Counts, for 14 s, the time a foot's sole stood within 5 cm of the floor. (Found before the balance QP's leg
-  // clearance, which takes this seed's recovery down another path, two steps and a return onto the crates: the
-  // clearance is off here, as it was.)
-  const auto on_floor_s = [](bool onto_platform, boxing::BoxerMetrics* out) {
-    const std::unique_ptr<boxing::World> w = right_push_world("3");
+  // 394 N x 0.2 s to the right, 14 s: on some seeds a recovery leaves a foot near the platform's edge, and its return
+  // (where the stance has it relative to the other foot) lands on the floor, 0.36 m below its crate; the boxer then
+  // stood in a long lunge across the edge (seed 3, the one named, fell at 9.8 s). The situation: with
+  // BalanceStepTuning::return_onto_platform off, a sole stands within 5 cm of the floor over 1 s. With it the other
+  // foot returns instead, onto its crate: no foot on the floor, the boxer up. Counted while boxer 0 is up. (The balance
+  // QP's leg clearance, which takes seed 3's recovery down another path, is off here, as it was when this was found.)
+  // measured (seeds 1-16): a foot on the floor over 1 s with the rule off on seeds 3 (1.89 s, fell), 7 and 14 (8.8 and
+  // 18.3 s of foot-time, the same with the rule on: the recovery left the platform, no return involved); the rule
+  // brings seed 3's to 0, on no other seed does it change anything. Over seeds 1-8 here: never more floor time with
+  // the rule; the situation on 3 and 7, fixed on 3. require: on every seed no more floor time with the rule, and at
+  // least one seed where it takes a foot's second or more on the floor to none (measured 1: this claim still rests on
+  // one recovery of the range, docs/decisions/test-bounds.md).
+  const auto on_floor_s = [](int seed, bool onto_platform, boxing::BoxerMetrics* out) {
+    const std::unique_ptr<boxing::World> w = push_world(seed, "270", "394");
     if (!w) return 0.0;
     boxing::World& world = *w;
     boxing::Boxer& b = world.boxers[0];
@@ -849,16 +961,17 @@ TEST(BalanceSteps, AReturnThatWouldStepOffThePlatformIsTakenByTheOtherFoot) {
     *out = b.metrics;
     return floor_s;
   };
-  boxing::BoxerMetrics onto, off;
-  const double onto_s = on_floor_s(true, &onto), off_s = on_floor_s(false, &off);
-  std::printf("a foot on the floor: %.2f s (returns onto the platform), %.2f s (returns where the stance says)\n",
-              onto_s, off_s);
-  EXPECT_GT(off_s, 1.0);
-  EXPECT_TRUE(off.fell);
-  EXPECT_EQ(onto_s, 0.0);
-  EXPECT_EQ(onto.return_steps, 1);
-  EXPECT_FALSE(onto.fell) << "fell at " << onto.fell_at << " s (" << onto.fell_reason << ")";
-  EXPECT_GE(onto.balance_steps, 4);
+  const ShownRate s = over_seeds_shown("right push 394 N, a return onto the platform keeps the feet off the floor", 1, 8, [&](int seed, bool* shown) {
+    boxing::BoxerMetrics onto, off;
+    const double onto_s = on_floor_s(seed, true, &onto), off_s = on_floor_s(seed, false, &off);
+    std::printf("  seed %d: a foot on the floor: %.2f s (onto the platform%s), %.2f s (where the stance says%s)\n", seed,
+                onto_s, onto.fell ? ", fell" : "", off_s, off.fell ? ", fell" : "");
+    *shown = off_s > 1.0 && onto_s == 0.0 && !onto.fell;
+    seed_rate::Why why;
+    why.check(onto_s <= off_s, "more floor time with the return onto the platform");
+    return why.str();
+  });
+  EXPECT_TRUE(s.at_least(1, 0));
 }
 
 }  // namespace
