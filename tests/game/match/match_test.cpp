@@ -22,7 +22,8 @@
 namespace boxing {
 namespace {
 
-std::unique_ptr<World> run_match(uint64_t seed, double seconds, const std::function<void(MatchTuning&)>& tune = {}) {
+// The match scenario's world on `seed`, its MatchTuning changed by `tune` (nullptr when it cannot be built).
+std::unique_ptr<World> match_world(uint64_t seed, const std::function<void(MatchTuning&)>& tune) {
   Options o;
   o.headless = true;
   o.scenario_id = Scenario::Match;
@@ -32,8 +33,14 @@ std::unique_ptr<World> run_match(uint64_t seed, double seconds, const std::funct
   EXPECT_TRUE(w) << w.error();
   if (!w) return nullptr;
   if (tune) tune((*w)->match->tuning);
-  for (int i = 0; i < static_cast<int>(seconds * 240); ++i) step_world(**w);
   return std::move(*w);
+}
+
+std::unique_ptr<World> run_match(uint64_t seed, double seconds, const std::function<void(MatchTuning&)>& tune = {}) {
+  auto w = match_world(seed, tune);
+  if (!w) return nullptr;
+  for (int i = 0; i < static_cast<int>(seconds * 240); ++i) step_world(*w);
+  return w;
 }
 
 // The rules every punch of a fight obeys (PunchesLandOnly...): "" when all do, otherwise which broke them.
@@ -166,16 +173,9 @@ TEST(Match, KnockedDownBoxerGetsUpFromTheWayItLiesOnItsMarkWithinTheCount) {
 // chest away from blue (floors a boxer in guard: match_rules_test.cpp). Returns the world with red's GetUp open, or
 // nullptr when it was not counted down within 4 s.
 std::unique_ptr<World> red_put_down(uint64_t seed, const std::function<void(MatchTuning&)>& tune) {
-  Options o;
-  o.headless = true;
-  o.scenario_id = Scenario::Match;
-  o.scenario = "match";
-  o.seed = seed;
-  auto w = make_world(o);
-  EXPECT_TRUE(w) << w.error();
+  auto w = match_world(seed, tune);
   if (!w) return nullptr;
-  World& world = **w;
-  if (tune) tune(world.match->tuning);
+  World& world = *w;
   for (int k = 0; k < 2; ++k) {
     InputEvent e;
     e.kind = InputKind::Set;
@@ -200,7 +200,7 @@ std::unique_ptr<World> red_put_down(uint64_t seed, const std::function<void(Matc
   interaction_submit(world, push);
   for (int i = 0; i < 4 * 240 && world.match->fighter[0].getup < 0; ++i) step_world(world);
   if (world.match->fighter[0].getup < 0) return nullptr;
-  return std::move(*w);
+  return w;
 }
 
 // Whether every geom of boxer k's two thighs collides with the rest of its own body (Geom::self_collide).
