@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <variant>
 
 #include "engine/control/servo/person_space.h"
@@ -145,9 +147,11 @@ void fit_support_legs(const eng::physics::Model& m, eng::physics::Data& d, const
       err += (d.x[b.bodies.body[legs[k].foot]].p - P0[legs[k].foot]).head<2>();
       ++planted;
     }
-    if (b.ctl.balance_steps.step.active) {
+    if (b.ctl.balance_steps.step.active && !b.ctl.balance_steps.step.quick) {
       // A balance step under way: the desired body goes where the pelvis is (the push carried it; the legs' targets
       // then reach from there, and the QP's com task does the balancing) instead of hauling it back over its feet.
+      // Not a footwork step (quick): nothing pushed, its stance foot anchors the body (following the pelvis, the
+      // desired body and the pelvis ran off together, 0.35 m in a swing).
       const Eigen::Vector2d e = (d.x[b.bodies.body[0]].p - b.desired.pose.root_position).head<2>();
       b.ctl.anchor += e;
       b.desired.pose.root_position.head<2>() += e;
@@ -234,14 +238,8 @@ void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const en
   if (steps && d.time > 0.0) update_support_base(d, arena, b, dt);
   if (steps && d.time > 0.0) gate_lift_off(m, d, desc, arena, b, swing, dt);
   laps.lap(&ControlStageTimes::stepping);
+  footwork_turn(b, dt);
   place_desired_pose(desc, arena, b, b.desired);
-  if (b.ctl.state.state == BoxerState::GettingUp) {
-    // Rising, the boxer makes its way back to its mark (the stance: fighting distance), the root assist guiding it:
-    // the placement's offset decays with a 0.7 s time constant (its steps do not carry it there, see arena.h).
-    const Eigen::Vector2d back = -(1.0 - std::exp(-dt / 0.7)) * b.ctl.anchor;
-    b.ctl.anchor += back;
-    b.desired.pose.root_position.head<2>() += back;
-  }
   laps.lap(&ControlStageTimes::pose);
   if (steps) plan_steps(d, desc, arena, b, swing, dt);
   if (steps && d.time > 0.0) take_balance_steps(m, d, desc, arena, b, swing, dt);

@@ -132,6 +132,7 @@ struct BoxerControlState {
   // The clip's step as it was when the clip lifted the foot (StepTuning::carry_whole): its whole travel and swing.
   std::optional<eng::control::Touchdown> clip_step[2];  // none: the clip's step not seen yet
   eng::control::BalanceStepState balance_steps;  // balance QP: the balance's own steps (balance_step.h)
+  FootworkState footwork;  // the deliberate steps under way (footwork.h)
   eng::control::CartPoleLqr step_lqr;            // StepPlacement::InvertedPendulumLqr's gain (solved at setup)
   // The player's hands (or the chaos soak's) hold or push one of its bodies until this time (s; step_world): the
   // balance QP's Kudoh priorities stay off meanwhile (qp_balance.h BalanceQpTuning::trunk_weight).

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 
 #include "engine/control/biped/capture_point.h"
 #include "engine/control/biped/support_polygon.h"
@@ -11,6 +13,7 @@
 #include "engine/control/servo/world_pose.h"
 #include "engine/physics/dynamics.h"
 #include "game/boxer.h"
+#include "game/footwork.h"
 
 namespace boxing {
 
@@ -449,6 +452,32 @@ void watch_capture_point(const eng::physics::Model& m, const eng::physics::Data&
   }
 }
 
+// A footwork step (footwork.h; its own swing time) lifts once the weight is off the foot enough for a quick step: the
+// capture point, with the centre of pressure held in the stance foot (its sole's centre) for the swing, ends inside the
+// stance and landing soles together (the lift-off gate's quick-step test, Pratt et al. 2006 eq. 8 for xi(t)) and
+// at least FootworkTuning::min_shift has passed. The recovery's return waits for the com at rest over the other foot
+// (return_shift_margin, return_lift_speed): a second or two, where a boxer's step takes a fraction of one.
+bool footwork_may_lift(Boxer& b, const StepView& v, const std::vector<Eigen::Vector2d>& stance_hull, int r) {
+  const eng::control::BalanceStepState& st = b.ctl.balance_steps;
+  const FootworkTuning& ft = b.settings.tuning.footwork;
+  if (st.shift_time < ft.min_shift) return false;
+  // Unweighted: the foot bears less than unload_share of the body's weight (the com over the other foot's side).
+  if (b.ctl.contacts.normal_force[r] < ft.unload_share * b.control_body.total_mass * 9.81) return true;
+  Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+  for (const Eigen::Vector2d& p : stance_hull) centre += p;
+  centre /= static_cast<double>(stance_hull.size());
+  const Eigen::Vector2d xi_end = eng::control::capture_point_after(v.xi, centre, v.omega, st.return_duration);
+  const eng::control::SoleShape& sole = b.settings.tuning.step.foothold.sole;
+  const Eigen::Rotation2Dd R(eng::control::heading_of(b.scratch.fk_W[b.bones.foot[r]]));
+  std::vector<Eigen::Vector2d>& pts = b.scratch.pts;
+  pts = stance_hull;
+  const Eigen::Vector2d ankle = st.return_to - R * b.settings.tuning.foot.centre.head<2>();
+  for (double x : {sole.heel, sole.toe})
+    for (double y : {-sole.half_width, sole.half_width}) pts.push_back(ankle + R * Eigen::Vector2d(x, y));
+  eng::control::convex_hull_2d_in_place(pts, b.scratch.hull);
+  return eng::control::outside_distance(b.scratch.hull, xi_end) < -ft.lift_margin;
+}
+
 // The return step's weight shift (a loaded foot lifted at once tips the body over it): the QP's com target goes over
 // the other foot (the lift-off gate's `holding`) until the capture point is inside its sole; then the return step
 // starts. True while the weight is still shifting (the foot held down).
@@ -462,13 +491,19 @@ bool shift_weight_for_return(const eng::assets::CharacterDesc& desc, const StepV
   eng::control::convex_hull_2d(v.corners[1 - r], other);
   if (st.shift_time > t.return_shift_max || other.empty() || st.step.active) {
     st.shifting = -1;
-  } else if (eng::control::outside_distance(other, v.xi) < -t.return_shift_margin && v.vcom.norm() < t.return_lift_speed) {
+    st.return_duration = 0.0;
+  } else if (st.return_duration > 0.0 ? footwork_may_lift(b, v, other, r)
+                                       : eng::control::outside_distance(other, v.xi) < -t.return_shift_margin &&
+                                             v.vcom.norm() < t.return_lift_speed) {
     pose_fk(desc.skeleton, b.desired.pose, b.scratch.fk_W, b.scratch.fk_P);
     eng::control::start_balance_step(st.step, r, true, v.sole[r], st.return_to, v.sole[1 - r], t.pass_clearance,
-                                     eng::control::heading_of(b.scratch.fk_W[b.bones.foot[r]]), t.return_duration,
-                                     v.ground, b.settings.tuning.foot, t.foothold);
+                                     eng::control::heading_of(b.scratch.fk_W[b.bones.foot[r]]),
+                                     st.return_duration > 0.0 ? st.return_duration : t.return_duration, v.ground,
+                                     b.settings.tuning.foot, t.foothold);
     ++b.metrics.return_steps;
+    st.step.quick = st.return_duration > 0.0;
     st.shifting = -1;
+    st.return_duration = 0.0;
   } else {
     swing[r] = false;
     b.ctl.gate[r].holding = true;
@@ -516,6 +551,14 @@ void take_balance_steps(const eng::physics::Model& m, const eng::physics::Data& 
     swing_balance_step(v, b, dt);
   else
     watch_capture_point(m, d, desc, v, arena, b, dt);
+  if (footwork_busy(b)) {
+    // The deliberate steps (footwork.h) go through the return's machinery: where the desired pose has the soles.
+    pose_fk(desc.skeleton, b.desired.pose, b.scratch.fk_W, b.scratch.fk_P);
+    Eigen::Vector2d want[2];
+    for (int j = 0; j < 2; ++j)
+      want[j] = (b.scratch.fk_P[b.bones.foot[j]] + b.scratch.fk_W[b.bones.foot[j]] * b.settings.tuning.foot.centre).head<2>();
+    footwork_steps(arena, b, v.sole, want);
+  }
   if (st.shifting >= 0 && !st.step.active && shift_weight_for_return(desc, v, b, swing, dt)) return;
   if (!st.step.active) return;
   override_clip_feet(b, swing);

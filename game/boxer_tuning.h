@@ -10,6 +10,7 @@
 #include "game/balance/qp_balance.h"
 #include "game/balance/stand_up.h"
 #include "game/boxer_state.h"
+#include "game/footwork.h"
 
 namespace boxing {
 
@@ -58,6 +59,7 @@ struct BoxerTuning {
   ServoSetupTuning servo;
   RootTuning root;
   StandUpTuning stand_up;
+  FootworkTuning footwork;
 };
 
 }  // namespace boxing

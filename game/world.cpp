@@ -449,6 +449,8 @@ nlohmann::json world_report(const World& w) {
                       {"step_travel", step_travel_report(m)},
                       {"balance_steps", m.balance_steps},
                       {"return_steps", m.return_steps},
+                      {"footwork", {{"moves", b.ctl.footwork.moves}, {"steps", b.ctl.footwork.steps},
+                                    {"dropped", b.ctl.footwork.dropped}}},
                       {"most_steps_in_recovery", m.most_steps_in_recovery},
                       {"late_landings", m.late_landings},
                       {"replacements", m.replacements},

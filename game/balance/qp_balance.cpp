@@ -253,7 +253,9 @@ bool shift_weight(QpBalance& q, BalanceTick& tick, const QpStep& s, Eigen::Vecto
       contact_centre(in.contacts, other, target);
       if (!q.return_shift) q.return_shift_target = s.cs.com_a.head<2>();
       const Eigen::Vector2d to = target - q.return_shift_target;
-      const double most = tq.return_shift_speed * tick.dt;
+      // A footwork step's shift (its own swing time set) is a boxer's quick unweighting, not the recovery's careful one.
+      const bool quick = b.ctl.balance_steps.return_duration > 0.0;
+      const double most = (quick ? b.settings.tuning.footwork.shift_speed : tq.return_shift_speed) * tick.dt;
       q.return_shift_target += to.norm() > most ? Eigen::Vector2d(to * (most / to.norm())) : to;
       target = q.return_shift_target;
       return_shift = true;
@@ -282,11 +284,16 @@ Eigen::Vector2d support_target(QpBalance& q, BalanceTick& tick, const QpStep& s,
   const bool return_shift = shift_weight(q, tick, s, target);
   q.return_shift = return_shift;
   const eng::control::BalanceStep& step = b.ctl.balance_steps.step;
-  if (step.active && step.returning) {
+  // A footwork step (quick) keeps the clip's target, the anchored desired body between the feet: the com travels
+  // with the step (clamped into the stance foot's sole while it swings), as a boxer's does.
+  const bool held = step.active && step.returning && !step.quick;
+  if (held) {
     contact_centre(in.contacts, b.bodies.body[b.bones.foot[1 - step.foot]], target);
     v_d.setZero();
   }
-  settle_after_return(tick.b.ctl.balance_steps, return_shift || (step.active && step.returning),
+  const bool quick_shift = return_shift && b.ctl.balance_steps.return_duration > 0.0;
+  if (quick_shift || (step.active && step.quick)) tick.b.ctl.balance_steps.settling = false;
+  settle_after_return(tick.b.ctl.balance_steps, (return_shift && !quick_shift) || held,
                       step.active && !step.returning, tq.return_shift_speed, tq.return_settle_time, tick.dt, target, v_d);
   return target;
 }

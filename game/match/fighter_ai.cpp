@@ -86,14 +86,6 @@ const char* fighter_ai_tick(FighterAi& ai, eng::anim::GraphWalker& walker, const
       return p;
     }
   }
-  // Footwork: keep fighting distance with the graph's steps (not too often: FighterAiTuning::step_every).
-  // Pressing a rocked opponent: each step in as soon as the last has ended (free: back in guard).
-  if (v.free && !v.feet_busy && (v.too_far || v.too_close) && (v.time >= ai.next_step || (v.press && v.too_far))) {
-    ai.next_step = v.time + ai.tuning.step_every;
-    const char* step = v.too_far ? "step_forward" : "step_back";
-    if (walker.request_clip(step)) ai.last_request = step;
-    return nullptr;
-  }
   if (!v.free || !v.in_range || v.time < ai.next_attack) return nullptr;
   // Poisson attempts: the next one an exponential wait away (at least min_attack_wait: a punch's own length).
   const double rate = std::max(ai.tuning.min_attack_rate, ai.style.attack_rate * v.slow);

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "game/boxer_stepping.h"
+#include "game/footwork.h"
 #include "game/match/match.h"
 #include "game/match/match_internal.h"
 #include "game/match/punch_aim.h"
@@ -61,7 +62,8 @@ FighterView fighter_view(const World& w, int k, const Clip& c, bool standing) {
   FighterView v;
   v.time = t;
   v.punching = is_punch(&c);
-  v.free = standing && !b.source.walker()->has_plan() && c.has_tag("guard");
+  // A footwork move under way (footwork.h) holds the punches until its feet are down.
+  v.free = standing && !b.source.walker()->has_plan() && c.has_tag("guard") && !footwork_busy(b);
   // Distance: the opponent's head from this boxer's chest, on the floor. A straight punch puts the glove's centre
   // about MatchTuning::reach ahead of the chest at full extension; in range within a head's depth of that.
   const double dist = reach_distance(w, k);
@@ -76,7 +78,7 @@ FighterView fighter_view(const World& w, int k, const Clip& c, bool standing) {
   // A balance step, its settling or its return under way (balance_step.h phases 1-3), or a stance the body cannot
   // fight from: the feet are the balance's, and the AI asks for no footwork (fighter_ai.h).
   const auto& bst = b.ctl.balance_steps;
-  v.feet_busy = bst.step.active || bst.recovering || bst.shifting >= 0 || !stance_can_fight(w.data, b);
+  v.feet_busy = bst.step.active || bst.recovering || bst.shifting >= 0 || footwork_busy(b) || !stance_can_fight(w.data, b);
   v.other_started = f.saw_punch;
   v.slow = b.ctl.state.state == BoxerState::Stunned ? mt.tuning.stunned_attack_scale : 1.0;
   return v;

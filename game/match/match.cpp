@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "engine/anim/motion_graph.h"
+#include "game/footwork.h"
 #include "game/match/hits.h"
 #include "game/match/match_internal.h"
 #include "game/world.h"
@@ -113,6 +114,9 @@ void match_before_control(World& w) {
     if (mt.over) continue;
     const FighterView v = fighter_view(w, k, c, standing);
     f.saw_punch = nullptr;
+    if (v.punching) f.punching_until = w.data.time;
+    const bool just_punched = !v.punching && w.data.time - f.punching_until < mt.tuning.footwork.exit_within;
+    if (footwork_ai_tick(w, k, v.free, just_punched)) continue;
     fighter_ai_tick(f.ai, *walker, v, kPhysicsDt);
   }
 }
@@ -120,7 +124,6 @@ void match_before_control(World& w) {
 void match_after_step(World& w) {
   Match& mt = *w.match;
   if (!mt.active || w.boxers.size() < 2) return;
-  bring_together(w);
   const char* started[2];
   track_punches(w, started);
   for (int k = 0; k < 2; ++k) mt.fighter[1 - k].saw_punch = started[k];

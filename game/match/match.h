@@ -28,6 +28,7 @@
 #include "game/match/body_parts.h"
 #include "game/match/fighter_ai.h"
 #include "game/match/fighter_view.h"
+#include "game/match/footwork_ai.h"
 #include "game/match/match_report.h"
 #include "game/match/referee.h"
 #include "game/match/replay.h"
@@ -129,6 +130,7 @@ struct MatchTuning {
   // The boxers' balance QP priorities in the fight (BalanceQpTuning::trunk_weight, com_weight; 1 / 1 elsewhere).
   double trunk_weight = 100.0;
   double com_weight = 30.0;
+  FootworkAiTuning footwork;  // the AI's steps in the ring (footwork_ai.h)
 };
 
 struct PunchEvent {
@@ -196,6 +198,13 @@ struct MatchFighter {
   int getup = -1;                // getups index of the current knockdown
   double reset_lift = 0.0, reset_feet_off = 0.0;  // the last back_to_marks (GetUp::reset_lift, reset_feet_off)
   const char* saw_punch = nullptr;  // the other boxer started this punch on the last tick (for the AI)
+  // The AI's footwork (footwork_ai.h): the earliest next move, when the last one ended, its way round the opponent
+  // (+1 left), and the referee's errand (a neutral corner while the other is down).
+  double next_move = 0.0, last_move_end = 0.0, punching_until = -1e9;
+  bool was_moving = false;
+  int circle_side = 1;
+  bool go_to_active = false;
+  Eigen::Vector2d go_to = Eigen::Vector2d::Zero();
   // The punch's target: a point fixed to the opponent's head or chest (bone frame), the opening chosen at the punch's
   // start (best_opening) and followed as the opponent moves.
   int aim_bone = -1;

@@ -6,6 +6,7 @@
 #include "game/boxer_stepping.h"
 #include "game/character_builder.h"
 #include "game/match/fighter_view.h"
+#include "game/match/footwork_ai.h"
 #include "game/match/match.h"
 #include "game/match/match_internal.h"
 
@@ -47,61 +48,24 @@ void pass_through_opponent(World& w, int k, bool on) {
     set_self_colliding(w.model, b.bodies, {b.bones.leg[0].thigh, b.bones.leg[1].thigh}, !on);  // add_boxer's pair
 }
 
-// How far the boxer's lowest geom point is below the crate top (or the floor) under it (m; < 0: all clear), for the
-// pose in w.data.q: every box corner and the bottom of every capsule cap and sphere, against Arena::top_at there.
-double deepest_below_crates(World& w, const Boxer& b) {
-  eng::physics::forward_kinematics(w.model, w.data);
-  double deepest = -1e9;
-  auto below = [&](const Eigen::Vector3d& p) { deepest = std::max(deepest, w.arena.top_at(p.x(), p.y()) - p.z()); };
-  for (size_t i = 0; i < b.bodies.first_geom.size(); ++i)
-    for (int g = b.bodies.first_geom[i]; g < b.bodies.first_geom[i] + b.bodies.geom_count[i]; ++g) {
-      const auto& G = w.model.geoms[g];
-      const eng::physics::Pose x = w.data.x[G.body] * G.local;
-      const auto& sh = G.shape;
-      switch (sh.type) {
-        case eng::physics::ShapeType::Box:
-          for (int k = 0; k < 8; ++k) {
-            const Eigen::Vector3d c((k & 1 ? 1 : -1) * sh.half_extents.x(), (k & 2 ? 1 : -1) * sh.half_extents.y(),
-                                    (k & 4 ? 1 : -1) * sh.half_extents.z());
-            below(x.apply(c));
-          }
-          break;
-        case eng::physics::ShapeType::Capsule:
-          for (int k = -1; k <= 1; k += 2) below(x.apply(Eigen::Vector3d(0, 0, k * sh.half_length)) - sh.radius * Eigen::Vector3d::UnitZ());
-          break;
-        case eng::physics::ShapeType::Sphere: below(x.p - sh.radius * Eigen::Vector3d::UnitZ()); break;
-        case eng::physics::ShapeType::Plane: break;
-      }
-    }
-  return deepest;
+// The get-up starts where the body lies: the stance re-based under it, so the stand-up clip is placed at the pelvis
+// (kept where it was, the clip's placement would be up to a metre away and the root assist would haul the body there).
+void rise_where_lying(World& w, Boxer& b) {
+  eng::anim::GraphWalker* walker = b.source.walker();
+  if (!walker) return;
+  const eng::anim::Pose& p0 = walker->preview(0.0);  // the stand-up's first frame, in the clip's frame
+  const Eigen::Rotation2Dd R(b.stance.heading + b.ctl.yaw_offset);
+  const Eigen::Vector2d clip = R * (p0.root_position.head<2>() + Eigen::Vector2d(b.settings.tuning.stance.clip_forward, 0.0));
+  const Eigen::Vector2d pelvis = w.data.x[b.bodies.body[0]].p.head<2>();
+  b.stance = stance_at(w.arena, pelvis - clip - b.ctl.anchor, b.stance.heading);
 }
 
-// Boxer b set at rest on its mark: its walk restarted in guard, its body on the start's pose (lifted out of any
-// crate it sinks into), the placement's report in its MatchFighter.
-void place_on_mark(World& w, Boxer& b, eng::anim::GraphWalker& walker) {
-  // The walk starts over in guard and the body is set on its pose placed as at the start (place_boxer): the start's
-  // stance on the same crates, facing the opponent. Not the desired pose moved onto the mark: its legs reach for the
-  // feet where the boxer got up, and moved with it they can put the boxer down cross-legged with a foot inside a
-  // crate (docs/decisions/match-fight.md).
-  b.ctl.have_support_base = false;  // placed on the stance's crates (place_desired_pose), not where it got up
-  walker.restart("guard");
-  b.ctl.yaw_offset = 0.0;
-  b.ctl.anchor.setZero();
-  b.desired.pose = walker.preview(0.0);
-  place_desired_pose(w.boxer_desc, w.arena, b, b.desired);
-  set_character_pose(w.model, w.data, b.bodies, w.boxer_desc, b.desired.pose.root_position, b.desired.pose.rotation);
-  // A body that starts inside a crate stays wedged in it: lifted until nothing is below the tops under it (a guard:
-  // the walk's pose is placed on the crates, reset_lift reports any lift).
-  const double sunk = deepest_below_crates(w, b);  // (its forward kinematics: the ankles below)
-  MatchFighter& f = w.match->fighter[b.index];
-  f.reset_lift = std::max(0.0, sunk);
-  f.reset_feet_off = 0.0;
-  for (int k = 0; k < 2; ++k)
-    f.reset_feet_off = std::max(f.reset_feet_off, (w.data.x[b.bodies.body[b.bones.foot[k]]].p - b.metrics.foot0[k]).head<2>().norm());
-  if (sunk > w.match->tuning.reset_clearance) {
-    b.desired.pose.root_position.z() += sunk;
-    set_character_pose(w.model, w.data, b.bodies, w.boxer_desc, b.desired.pose.root_position, b.desired.pose.rotation);
-  }
+// The standing boxer goes to a neutral corner while the other is down (the referee's order; standing over the downed
+// one, a get-up rises into him). It walks there (footwork_ai.h).
+void send_to_neutral_corner(World& w, int standing) {
+  MatchFighter& f = w.match->fighter[standing];
+  f.go_to = neutral_corner(w, standing);
+  f.go_to_active = true;
 }
 
 // Consciousness low: stunned (softer gains); back over stun_below + unstun_margin: in guard again.
@@ -152,13 +116,7 @@ void while_down(World& w, int k, GetUp& g, double speed) {
   b.ctl.root_spring.set_consciousness(tu.getup_consciousness);
   pass_through_opponent(w, k, true);
   boxer_state_enter(s, BoxerState::GettingUp, t, "getting up");
-  // The standing boxer goes to a neutral corner, as a referee sends him (here: to its mark, a reset of that boxer
-  // only): standing over the downed one, the get-up rose into him and stuck crouched.
-  const Boxer& o = w.boxers[1 - k];
-  const int pelvis = b.bodies.body[0];
-  const Eigen::Vector3d po = w.data.x[o.bodies.body[0]].p, pk = w.data.x[pelvis].p;
-  if (standing_state(o.ctl.state.state) && (po - pk).head<2>().norm() < tu.neutral_corner_within)
-    back_to_marks(w, 1 - k);
+  rise_where_lying(w, b);
 }
 
 // Getting up: the root assist summed; up (guard playing, pelvis at standing height, both feet on the ground,
@@ -195,31 +153,11 @@ void while_getting_up(World& w, int k, GetUp& g, double speed) {
     // set on its mark, a boxer fell again within seconds with no punch on it).
     b.ctl.root_spring.set_consciousness(std::max(b.ctl.root_spring.consciousness(), tu.after_count));
     pass_through_opponent(w, k, false);
-    back_to_marks(w);
-    g.reset_lift = f.reset_lift, g.reset_feet_off = f.reset_feet_off;
+    mt.fighter[1 - k].go_to_active = false;  // the fight goes on from where both stand
   }
 }
 
 }  // namespace
-
-// The referee brings both boxers back to their marks once the downed one is up (a reset, as a fighting game's next
-// exchange: the boxers' steps do not carry them, arena.h, and a fall and get-up leave a boxer up to 0.8 m off its
-// mark, out of reach). Each body is set at rest on its starting pose (the walk in guard again), controllers start over.
-void back_to_marks(World& w, int only) {
-  for (Boxer& b : w.boxers) {
-    if (only >= 0 && b.index != only) continue;
-    eng::anim::GraphWalker* walker = b.source.walker();
-    if (!walker) continue;  // (the match's boxers always walk the graph)
-    place_on_mark(w, b, *walker);
-    for (auto& s : b.ctl.step) s.active = false;
-    for (auto& g : b.ctl.gate) g = {};
-    // The balance's steps start over too (a recovery, a return step's weight shift): kept across the reset, the
-    // weight shift leans the boxer toward the stance it left and the AI asks for no footwork meanwhile (feet_busy),
-    // and the referee resets the two for "apart" again and again (docs/decisions/footwork.md).
-    b.ctl.balance_steps = {};
-  }
-  ++w.match->resets;
-}
 
 void knock_down(World& w, int k, const Eigen::Vector3d& push_dir, const char* reason) {
   Boxer& b = w.boxers[k];
@@ -236,21 +174,7 @@ void knock_down(World& w, int k, const Eigen::Vector3d& push_dir, const char* re
   f.getup = static_cast<int>(w.match->getups.size());
   w.match->getups.push_back(down_at(k, t));
   f.still = 0.0;
-}
-
-// Pushed apart by the punches (the feet slide; the boxers cannot step back in): the referee brings them together.
-void bring_together(World& w) {
-  Match& mt = *w.match;
-  bool apart = standing_state(w.boxers[0].ctl.state.state) && standing_state(w.boxers[1].ctl.state.state);
-  for (int k = 0; k < 2 && apart; ++k) apart = !in_range(w, k);
-  // Not while a boxer presses a rocked opponent: its steps in close the gap (the stagger's 0.2-0.3 m).
-  for (const MatchFighter& f : mt.fighter) apart = apart && w.data.time - f.rocked_at >= mt.tuning.press_for;
-  mt.apart = apart && !mt.over ? mt.apart + kPhysicsDt : 0.0;
-  if (mt.apart >= mt.tuning.apart_time) {
-    back_to_marks(w);
-    ++mt.apart_resets;
-    mt.apart = 0.0;
-  }
+  send_to_neutral_corner(w, 1 - k);
 }
 
 void referee(World& w) {
@@ -262,7 +186,10 @@ void referee(World& w) {
     MatchFighter& f = mt.fighter[k];
     const BoxerStateMachine& s = b.ctl.state;
     update_stun(b, tu, t);
-    if (s.state == BoxerState::Down && s.since == t && f.getup < 0) count_fall(mt, b, k, t);
+    if (s.state == BoxerState::Down && s.since == t && f.getup < 0) {
+      count_fall(mt, b, k, t);
+      send_to_neutral_corner(w, 1 - k);
+    }
     if (f.getup < 0) continue;
     GetUp& g = mt.getups[f.getup];
     const int pelvis = b.bodies.body[0];

@@ -197,6 +197,7 @@ void start_balance_step(BalanceStep& s, int foot, bool returning, const Eigen::V
                         GroundHeight ground, const FootGeometry& g, const FootholdParams& fp) {
   s.active = true;
   s.returning = returning;
+  s.quick = false;
   s.foot = foot;
   s.from = from;
   s.stance = stance;

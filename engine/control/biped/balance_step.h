@@ -94,6 +94,9 @@ struct BalanceStepTuning {
 struct BalanceStep {
   bool active = false;
   bool returning = false;    // phase 3's step back to the stance
+  // A deliberate step (the game's footwork) through phase 3's machinery: quick, the com not held over the stance foot
+  // through its swing nor brought back slowly after it (the caller's balance reads it).
+  bool quick = false;
   int foot = -1;             // the stepping foot (0 or 1)
   Eigen::Vector2d from = Eigen::Vector2d::Zero(), to = Eigen::Vector2d::Zero();  // sole centre, world x y
   // The path's bend around the stance foot: the middle control point of a quadratic Bezier from `from` to `to` is
@@ -124,6 +127,7 @@ struct BalanceStepState {
   int shifting = -1;          // phase 3: this foot will step back once the weight is over the other (-1: none)
   double shift_time = 0.0;    // s shifting so far
   Eigen::Vector2d return_to = Eigen::Vector2d::Zero();  // where it steps back to (sole centre)
+  double return_duration = 0.0;  // s, this return's swing (0: BalanceStepTuning::return_duration)
   // After the return step's hold on the com (its weight shift and swing, the caller's balance): the com target coming
   // back from where the hold left it to where the stance wants it (world x y), and for how long so far.
   bool settling = false;

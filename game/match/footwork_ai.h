@@ -1,0 +1,33 @@
+#pragma once
+// The AI's footwork in the ring (footwork.h's moves): it keeps facing the opponent (pivots), steps in when out of
+// range, out when crowded or hurt, off the line after its punches, circles at range, cuts off an opponent on the
+// ropes, keeps inside the ring, and walks to a neutral corner when the referee sends it there (Match's go_to).
+#include <Eigen/Core>
+
+namespace boxing {
+
+struct World;
+
+struct FootworkAiTuning {
+  double band_in = 0.10;    // m inside reach: the nearest the AI wants to stand while trading (steps back inside it)
+  double band_out = 0.02;   // m past reach: the farthest (steps in beyond it)
+  double hurt_gap = 0.45;   // m past reach a hurt boxer keeps (backs away, circles)
+  double hurt_below = 0.65; // consciousness under this: hurt
+  double face_within = 0.30;  // rad: facing the opponent this well needs no pivot
+  double circle_rate = 0.7;   // lateral moves per second at range (Poisson), the style's footwork
+  double exit_share = 0.5;    // after a punch, the share that steps out or off the line at once ...
+  double exit_within = 0.3;   // s ... decided this soon after the punch ended
+  double pause_min = 0.15, pause_max = 0.8;  // s between moves at range
+  double ring_margin = 0.55;  // m, the stance's centre keeps this far inside the ring's edge
+  double corner_inset = 0.6;  // m, a neutral corner's spot inside the ring's corner
+  double at_corner = 0.35;    // m: there
+};
+
+// Boxer k's footwork decision this tick (an AI boxer, standing, its walk free). True: a move was asked for.
+bool footwork_ai_tick(World& w, int k, bool free, bool just_punched);
+// The ring's inside as the AI reads it: the platform's half size about its centre (m).
+Eigen::Vector2d ring_half_size(const World& w);
+// A neutral corner for the boxer k standing while the other is down: the ring corner farthest from the downed one.
+Eigen::Vector2d neutral_corner(const World& w, int standing);
+
+}  // namespace boxing
