@@ -93,6 +93,7 @@ void match_setup(World& w) {
       b.settings.tuning.qp.com_weight = mt.tuning.com_weight;
     }
   }
+  footwork_setup(w);
 }
 
 void match_before_control(World& w) {
@@ -129,6 +130,7 @@ void match_after_step(World& w) {
   read_hits(w);
   count_balance_steps_after_hit(w);
   referee(w);
+  measure_footwork(w);
 }
 
 }  // namespace boxing

@@ -28,6 +28,7 @@
 #include "game/match/body_parts.h"
 #include "game/match/fighter_ai.h"
 #include "game/match/fighter_view.h"
+#include "game/match/footwork_metrics.h"
 #include "game/match/match_report.h"
 #include "game/match/referee.h"
 #include "game/match/replay.h"
@@ -158,6 +159,9 @@ struct GetUp {
   // plane) the farther ankle stands from where it stood at the start (the clip's stance fitted to the same crates).
   double reset_lift = 0.0, reset_feet_off = 0.0;  // m
   int retries = 0;  // stand-ups given up and started again (MatchTuning::stand_up_give_up)
+  // m: the closest the other boxer came to the downed one (pelvis to pelvis, floor plane) from down_at to up_at
+  // (measure_footwork; -1 until measured).
+  double count_distance_min = -1.0;
 };
 
 // What the player asks of a boxer (keys, game/app.cpp): a punch, a defence or a step; taken by the motion graph like
@@ -222,6 +226,9 @@ struct Match {
   int resets = 0;  // times the referee brought the boxers back to their marks (after a get-up, or apart too long)
   int apart_resets = 0;  // of those, apart too long (neither stepped back into reach)
   double apart = 0.0;  // s both standing and out of reach of each other
+  int teleports = 0;   // a boxer's pose set directly after the start (count_teleport: the referee's place_on_mark)
+  std::array<FootworkMetrics, 2> footwork;  // the footwork as measured (footwork_metrics.h)
+  FootworkTuning footwork_tuning;
   ReplayBuffer replay;  // the last kReplaySeconds of the bodies' coordinates at 60 Hz (the window's instant replay)
   std::string result;  // "" while fighting; set by a knock-out (or at the report: points)
 };

@@ -32,6 +32,30 @@ MatchHud match_hud(const World& w) {
   return h;
 }
 
+namespace {
+
+// Per boxer, the footwork as measured (footwork_metrics.h) and the ropes' contact time (ring_ropes.h).
+nlohmann::json footwork_report(const World& w) {
+  nlohmann::json out = nlohmann::json::array();
+  for (int k = 0; k < 2 && k < static_cast<int>(w.boxers.size()); ++k) {
+    const FootworkMetrics& m = w.match->footwork[k];
+    out.push_back({{"boxer", k},
+                   {"steps", m.steps},
+                   {"standing_s", m.standing_s},
+                   {"steps_per_minute_standing", m.standing_s > 0.0 ? 60.0 * m.steps / m.standing_s : 0.0},
+                   {"path_m", m.path_m},
+                   {"time_in_range_s", m.time_in_range_s},
+                   {"legs_through_s", m.legs_through_s},
+                   {"ring_exits", m.ring_exits},
+                   {"ring_exits_after_hit", m.ring_exits_after_hit},
+                   {"rope_contacts_s", w.ropes.contact_s[k]},
+                   {"teleports", m.teleports}});
+  }
+  return out;
+}
+
+}  // namespace
+
 nlohmann::json match_report(const World& w) {
   const Match& mt = *w.match;
   nlohmann::json events = nlohmann::json::array();
@@ -62,7 +86,9 @@ nlohmann::json match_report(const World& w) {
                       {"reset_feet_off_m", g.reset_feet_off},
                       {"root_assist_force_rms_n", g.assist_time > 0 ? std::sqrt(g.assist_force_sq_dt / g.assist_time) : 0.0},
                       {"stand_up_s", g.assist_time},
-                      {"stand_up_retries", g.retries}});
+                      {"stand_up_retries", g.retries},
+                      {"count_distance_min_m", g.count_distance_min >= 0.0 ? nlohmann::json(g.count_distance_min)
+                                                                          : nlohmann::json(nullptr)}});
   auto pair = [&mt](auto get) { return nlohmann::json::array({get(mt.fighter[0]), get(mt.fighter[1])}); };
   std::string result = mt.result;
   if (result.empty()) {
@@ -103,6 +129,8 @@ nlohmann::json match_report(const World& w) {
           {"round", static_cast<int>(w.data.time / mt.round_seconds) + 1},
           {"ended_at_s", w.data.time},  // the run's end: a knockdown less than the count before it has no up_at_s yet
           {"getups", getups},
+          {"teleports", mt.teleports},
+          {"fighters", footwork_report(w)},
           {"result", result},
           {"events", events}};
 }

@@ -90,6 +90,7 @@ void place_on_mark(World& w, Boxer& b, eng::anim::GraphWalker& walker) {
   b.desired.pose = walker.preview(0.0);
   place_desired_pose(w.boxer_desc, w.arena, b, b.desired);
   set_character_pose(w.model, w.data, b.bodies, w.boxer_desc, b.desired.pose.root_position, b.desired.pose.rotation);
+  count_teleport(w, b.index);
   // A body that starts inside a crate stays wedged in it: lifted until nothing is below the tops under it (a guard:
   // the walk's pose is placed on the crates, reset_lift reports any lift).
   const double sunk = deepest_below_crates(w, b);  // (its forward kinematics: the ankles below)
