@@ -1,5 +1,6 @@
 #include "game/arena.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "game/rng.h"
@@ -83,6 +84,81 @@ Arena make_arena(uint64_t seed, double min_step, double separation, bool flat) {
       }
     }
   }
+  for (Stance& s : a.stances) s = stance_at(a, s.position, s.heading);
+  return a;
+}
+
+}  // namespace boxing
+
+namespace boxing {
+
+namespace {
+
+// One column of the ring's crates at (cx, cy) with its top at h: two stacked crates when tall (as make_arena's).
+void add_column(Arena& a, Rng& rng, double cx, double cy, double h, double tone_scale) {
+  constexpr double kGap = 0.006;
+  const double half = 0.5 * a.cell - kGap;
+  const float tone = static_cast<float>(rng.uniform(0.85, 1.1) * tone_scale);
+  const Eigen::Vector3f wood(0.42f * tone, 0.26f * tone, 0.13f * tone);
+  if (h > 0.32) {
+    const double lower = 0.16 + rng.uniform(0.0, 0.04);
+    a.crates.push_back(Crate{{cx, cy, 0.5 * lower}, {half, half, 0.5 * lower}, wood});
+    const double shrink = rng.uniform(0.0, 0.02);
+    a.crates.push_back(Crate{{cx, cy, lower + 0.5 * (h - lower)}, {half - shrink, half - shrink, 0.5 * (h - lower)},
+                             Eigen::Vector3f(wood.x() * 1.08f, wood.y() * 1.05f, wood.z())});
+  } else {
+    a.crates.push_back(Crate{{cx, cy, 0.5 * h}, {half, half, 0.5 * h}, wood});
+  }
+}
+
+}  // namespace
+
+Arena make_ring(uint64_t seed, double min_step, double separation) {
+  Rng rng(seed * 0x9E3779B97F4A7C15ull + 0x5171ull);
+  Arena a;
+  constexpr int kInside = 10, kApron = 1, kN = kInside + 2 * kApron;
+  constexpr double kTop = 0.30, kSpread = 0.04;  // inside tops: kTop +- kSpread (neighbours 8 cm apart at most)
+  const double cell = a.cell;
+  const double half = 0.5 * kInside * cell, x0 = -0.5 * kN * cell;
+  double height[kN][kN];
+  for (int i = 0; i < kN; ++i)
+    for (int j = 0; j < kN; ++j) {
+      const bool apron = i < kApron || j < kApron || i >= kN - kApron || j >= kN - kApron;
+      // The apron a little lower than the ring's floor (a step down of 0-8 cm past the ropes).
+      height[i][j] = apron ? kTop - 0.03 + rng.uniform(-0.01, 0.01) : kTop + rng.uniform(-kSpread, kSpread);
+    }
+  const double sx = 0.5 * separation;
+  a.stances[0] = Stance{{-sx, 0.0}, 0.0, 0, 0};
+  a.stances[1] = Stance{{sx, 0.0}, M_PI, 0, 0};
+  auto cell_index = [&](double v) { return std::clamp(static_cast<int>(std::floor((v - x0) / cell)), 0, kN - 1); };
+  for (Stance& s : a.stances) {
+    const double c = std::cos(s.heading), sn = std::sin(s.heading);
+    const Eigen::Vector2d lead = s.position + Eigen::Vector2d(c * kStanceHalfLength - sn * kStanceHalfWidth,
+                                                              sn * kStanceHalfLength + c * kStanceHalfWidth);
+    const Eigen::Vector2d rear = 2.0 * s.position - lead;
+    double& hl = height[cell_index(lead.x())][cell_index(lead.y())];
+    double& hr = height[cell_index(rear.x())][cell_index(rear.y())];
+    // The arena's rule (one foot min_step or more higher, the random sign kept), about the ring's mean top: the two
+    // cells then stay within 8 cm of any neighbour.
+    const double sign = rng.uniform() < 0.5 ? -1.0 : 1.0;
+    hl = kTop + sign * 0.5 * (min_step + 0.02);
+    hr = kTop - sign * 0.5 * (min_step + 0.02);
+  }
+  double sum = 0.0;
+  for (int i = 0; i < kN; ++i)
+    for (int j = 0; j < kN; ++j) {
+      const bool apron = i < kApron || j < kApron || i >= kN - kApron || j >= kN - kApron;
+      if (!apron) sum += height[i][j];
+      add_column(a, rng, x0 + (i + 0.5) * cell, x0 + (j + 0.5) * cell, height[i][j], apron ? 0.8 : 1.0);
+    }
+  Ring& r = a.ring;
+  r.present = true;
+  r.half_inside = half;
+  r.top_mean = sum / (kInside * kInside);
+  r.corners[Ring::kRed] = {-half, -half};
+  r.corners[Ring::kBlue] = {half, half};
+  r.corners[Ring::kNeutral0] = {-half, half};
+  r.corners[Ring::kNeutral1] = {half, -half};
   for (Stance& s : a.stances) s = stance_at(a, s.position, s.heading);
   return a;
 }

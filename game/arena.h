@@ -3,6 +3,7 @@
 // Plain data; the game turns it into static physics geoms and render instances.
 #include <Eigen/Core>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -25,10 +26,30 @@ struct Stance {
   double rear_top = 0.0;
 };
 
+// The match's ring (make_ring): the inside square's crates, a one-cell apron of crates outside the ropes, a post at
+// each corner and three ropes a side (game/ring_ropes.h pushes a boxer past a rope line back in). Centred on the
+// origin, the ropes' lines at x, y = +-half_inside. Corners: [0] red (boxer 0's, -X -Y), [1] blue (boxer 1's, +X +Y),
+// [2] and [3] the neutral corners (-X +Y, +X -Y), each the inside corner of the ropes (floor plane, m).
+struct Ring {
+  bool present = false;
+  double half_inside = 0.0;  // m, half the inside square's side: the ropes' lines
+  double top_mean = 0.0;     // m, the inside crates' mean top (the ropes' heights are above it)
+  std::array<Eigen::Vector2d, 4> corners{};
+  std::array<double, 3> rope_heights{0.45, 0.85, 1.25};  // m above top_mean, bottom to top
+  double post_half = 0.06;    // m, a post's half width (its centre on the corner, drawn and collided)
+  double post_height = 1.35;  // m above top_mean
+  static constexpr int kRed = 0, kBlue = 1, kNeutral0 = 2, kNeutral1 = 3;
+  // Inside the ropes' square (floor plane), less margin.
+  bool inside(const Eigen::Vector2d& p, double margin = 0.0) const {
+    return std::abs(p.x()) <= half_inside - margin && std::abs(p.y()) <= half_inside - margin;
+  }
+};
+
 struct Arena {
   std::vector<Crate> crates;
   std::array<Stance, 2> stances;
   double cell = 0.5;  // crate footprint (m)
+  Ring ring;          // the match's (present only from make_ring)
   // Height of the crate top under the world point (x, y); 0 (the floor) outside the platform.
   double top_at(double x, double y) const;
 };
@@ -58,5 +79,14 @@ inline constexpr double kBoxerSeparation = 1.20;   // pelvis to pelvis (m)
 // chest; at 1.20 m it stopped 0.2 m short, in the guard). The boxers' steps barely carry them (the clips' quick
 // shuffles lift off, but the pressed sole drags: a tenth of the clip's travel), so the match starts at fighting distance.
 inline constexpr double kFightSeparation = 0.95;
+// The ring's marks: the boxers start out of reach (issue 62: they step in on their own feet), 2.8 m pelvis to pelvis,
+// and the step between the feet at a mark smaller than the plain arena's (the ring's tops vary by 8 cm at most).
+inline constexpr double kRingSeparation = 2.8;
+inline constexpr double kRingMinStep = 0.05;
+
+// The match's ring (Ring): 10 x 10 cells inside (5 m square), crate tops 0.30 +- 0.04 m (neighbours differ by 8 cm at
+// most), an apron of one cell around outside the ropes, the boxers' marks `separation` apart along X (pelvis to
+// pelvis), the two cells under each boxer's feet differing by min_step + 2 cm as in make_arena.
+Arena make_ring(uint64_t seed, double min_step = kRingMinStep, double separation = kRingSeparation);
 
 }  // namespace boxing

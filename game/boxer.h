@@ -150,7 +150,6 @@ struct BoxerControlState {
   // scale (lower when stunned or knocked down).
   PunchAim aim;
   double gain_scale = 1.0;
-  Eigen::Vector2d mark = Eigen::Vector2d::Zero();  // the match: where the pelvis starts (the referee's reset)
   double yaw_offset = 0.0;  // rad, added to the stance heading when placing the clip (the reset faces the opponent)
 };
 

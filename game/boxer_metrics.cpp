@@ -162,7 +162,7 @@ void boxer_measure(const eng::physics::Model& m, const eng::physics::Data& d, co
   measure_root_and_arms(d, desc, b, dt);
   measure_foot_slide(d, b);
   // The com's velocity from the body's momentum, not differenced positions: the match's referee sets a boxer on its
-  // mark (back_to_marks), and differenced, that jump reads as hundreds of m/s.
+  // mark (a pose set directly), and differenced, that jump reads as hundreds of m/s.
   const Eigen::Vector3d com = eng::physics::subtree_com(m, d, pelvis);
   const Eigen::Vector3d vcom = eng::physics::spatial_momentum(m, d, pelvis).tail<3>() / b.control_body.total_mass;
   mt.max_com_speed = std::max(mt.max_com_speed, vcom.norm());

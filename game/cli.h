@@ -68,6 +68,7 @@ struct Options {
   double root_spring_max = -1.0;      // N m, its torque limit; < 0: 400 with the QP, 120 with pd
   // match
   double round_seconds = 180.0;       // --round-seconds: a round's length (the report's round counter)
+  double start_apart = 2.8;           // --start-apart: the match's marks, pelvis to pelvis (m; arena.h kRingSeparation)
   int player = -1;                    // --player 0|1: that boxer takes the keyboard (-1: both AI)
   // the player's hands (game/interaction/)
   std::string input;                  // --input FILE.json: timed input events (drags, throws, pushes, keys, settings)

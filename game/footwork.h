@@ -21,8 +21,8 @@ const char* footwork_move_name(FootworkMove m);
 struct FootworkTuning {
   double stride = 0.30;       // m, the stance's displacement of a move forward or back
   double side_stride = 0.25;  // m, ... left or right
-  double max_turn = 0.7;      // rad, the most a move turns the heading
-  double turn_rate = 4.0;     // rad/s, the heading's turn before the feet follow
+  double max_turn = 0.5;      // rad, the most a move turns the heading
+  double turn_rate = 2.5;     // rad/s, the heading's turn before the feet follow
   double swing = 0.34;        // s, each step's swing (the return step's unhurried 0.45 s is the recovery's)
   double shift_speed = 0.8;   // m/s, the com target's move over the stance foot before the lift
   double unload_share = 0.2;  // ... or as soon as the foot bears less than this share of the body's weight

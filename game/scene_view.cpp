@@ -106,6 +106,58 @@ void draw_debug(const World& w, const DebugDrawFlags& dbg, eng::render::FrameDes
   }
 }
 
+// A box of the unit cube mesh stretched from a to b, `thick` m square across (a rope's segment, a post).
+Instance stretched_box(eng::render::MeshId mesh, const Eigen::Vector3d& a, const Eigen::Vector3d& b, double thick,
+                       const glm::vec4& color) {
+  const Eigen::Vector3d d = b - a;
+  const double len = d.norm();
+  Eigen::Matrix3d R = Eigen::Matrix3d::Identity();
+  if (len > 1e-9) {
+    const Eigen::Vector3d x = d / len;
+    const Eigen::Vector3d up = std::abs(x.z()) < 0.9 ? Eigen::Vector3d::UnitZ() : Eigen::Vector3d::UnitX();
+    const Eigen::Vector3d y = up.cross(x).normalized();
+    R.col(0) = x, R.col(1) = y, R.col(2) = x.cross(y);
+  }
+  Instance in;
+  in.mesh = mesh;
+  in.model = glm::scale(to_mat4(R, 0.5 * (a + b)), glm::vec3(float(len), float(thick), float(thick)));
+  in.material.base_color = color;
+  in.material.roughness = 0.6f;
+  return in;
+}
+
+// The ring's posts (red, blue and the two neutral corners' white) and its three ropes a side, each bent out where a
+// boxer pushes it this tick (RingRopesState::side) and otherwise sagging a little at its middle.
+void draw_ring(const World& w, const SceneView& v, eng::render::FrameDesc& f) {
+  const Ring& r = w.arena.ring;
+  if (!r.present) return;
+  static const glm::vec4 kPost[4] = {{0.8f, 0.1f, 0.1f, 1}, {0.1f, 0.2f, 0.8f, 1}, {0.9f, 0.9f, 0.9f, 1},
+                                     {0.9f, 0.9f, 0.9f, 1}};
+  const double top = r.top_mean + r.post_height;
+  for (int k = 0; k < 4; ++k) {
+    const Eigen::Vector3d c(r.corners[k].x(), r.corners[k].y(), 0.0);
+    f.opaque.push_back(stretched_box(v.ring_box, c, c + Eigen::Vector3d(0, 0, top), 2.0 * r.post_half, kPost[k]));
+  }
+  const double h = r.half_inside;
+  for (int s = 0; s < 4; ++s) {
+    const Eigen::Vector2d n = rope_side_normal(s);
+    const Eigen::Vector2d t(-n.y(), n.x());  // along the side
+    const RopeSideDeflection& dfl = w.ropes.side[s];
+    for (int i = 0; i < 3; ++i) {
+      const double z = r.top_mean + r.rope_heights[i];
+      const Eigen::Vector2d a2 = h * n - h * t, b2 = h * n + h * t;
+      const double along = dfl.depth > 0.0 ? std::clamp(dfl.along * (s < 2 ? t.y() : t.x()), -0.9 * h, 0.9 * h) : 0.0;
+      // Pushed: the rope nearest the pushing point goes out with it, the others less the farther they are.
+      const double out = dfl.depth > 0.0 ? dfl.depth * std::max(0.0, 1.0 - std::abs(dfl.z - z) / 0.5) : 0.0;
+      const Eigen::Vector2d m2 = h * n + along * t + out * n;
+      const Eigen::Vector3d a(a2.x(), a2.y(), z), b(b2.x(), b2.y(), z), m(m2.x(), m2.y(), z - 0.02);
+      const glm::vec4 color = i == 1 ? glm::vec4(0.85f, 0.1f, 0.1f, 1) : glm::vec4(0.92f, 0.92f, 0.9f, 1);
+      f.opaque.push_back(stretched_box(v.ring_box, a, m, 0.035, color));
+      f.opaque.push_back(stretched_box(v.ring_box, m, b, 0.035, color));
+    }
+  }
+}
+
 }  // namespace
 
 std::vector<BonePart> upload_character_parts(const eng::assets::GltfScene& scene,
@@ -154,6 +206,7 @@ SceneView make_scene_view(const World& w, eng::render::Renderer& r) {
                                 : r.upload_mesh(eng::render::make_box_mesh(glm::vec3(float(kCrate.half)))));
   }
   v.boxer_parts = upload_character_parts(w.boxer_scene, w.boxer_desc, r);
+  if (w.arena.ring.present) v.ring_box = r.upload_mesh(eng::render::make_box_mesh(glm::vec3(0.5f)));
   v.ghost = w.options.ghost;
   const std::string& dbg = w.options.debug_draw;  // --debug: a comma-separated list (cli.cpp checked the names)
   auto has = [&](const char* name) { return ("," + dbg + ",").find("," + std::string(name) + ",") != std::string::npos; };
@@ -180,6 +233,10 @@ eng::render::Camera camera_preset(const std::string& name, const World& w) {
   } else if (name == "top") {
     c.target = {0.0f, 0.0f, 0.3f};
     c.eye = {0.01f, -0.6f, 6.5f};
+  } else if (w.arena.ring.present) {
+    // The whole ring (6 m with its apron) from a corner's side, above the top rope.
+    c.target = {0.0f, 0.0f, 0.6f};
+    c.eye = {4.4f, -7.6f, 3.9f};
   } else {
     c.target = {0.0f, 0.0f, 0.85f};
     c.eye = {2.6f, -4.4f, 2.3f};
@@ -201,6 +258,7 @@ void fill_frame(const World& w, const SceneView& v, eng::render::FrameDesc& f) {
     in.material.roughness = 0.8f;
     f.opaque.push_back(in);
   }
+  draw_ring(w, v, f);
   for (size_t i = 0; i < w.loose.size(); ++i) {
     const auto& x = w.data.x[w.loose[i].body];
     if (!drawable(x)) continue;

@@ -30,6 +30,7 @@ struct SceneView {
   std::vector<eng::render::MeshId> loose_mesh;  // per loose body
   std::vector<eng::render::MeshId> object_mesh;  // per object of the interaction's pool (beach balls, crates)
   std::vector<BonePart> boxer_parts;
+  eng::render::MeshId ring_box{};  // a unit cube (the ring's posts and rope segments, scaled); only with a ring
   bool ghost = false;
   DebugDrawFlags debug;
 };

@@ -51,6 +51,19 @@ void add_static_arena(World& w) {
     g.group = kStaticGroup;
     w.model.add_geom(g);
   }
+  // The ring's corner posts (the ropes between them are forces, ring_ropes.h): static boxes from the floor.
+  const Ring& r = w.arena.ring;
+  for (int k = 0; k < 4 && r.present; ++k) {
+    Geom g;
+    g.shape.type = ShapeType::Box;
+    const double h = 0.5 * (r.top_mean + r.post_height);
+    g.shape.half_extents = Eigen::Vector3d(r.post_half, r.post_half, h);
+    g.body = 0;
+    g.local.p = Eigen::Vector3d(r.corners[k].x(), r.corners[k].y(), h);
+    g.friction = w.tuning.crate_friction;
+    g.group = kStaticGroup;
+    w.model.add_geom(g);
+  }
 }
 
 // The bones' mass properties as the control module takes them (bone frame, inertia about the com).
@@ -263,7 +276,10 @@ eng::Result<std::unique_ptr<World>> make_world(const Options& o) {
     return eng::make_error("boxing: --clip '" + o.drill_clip + "' is not a clip in " + dir +
                            "/clips/boxing_clips.gltf (see `build/boxing graph --report g.json` for the names)");
 
-  w->arena = make_arena(o.seed, w->tuning.arena_min_step, o.scenario_id == Scenario::Match ? kFightSeparation : kBoxerSeparation, o.flat);
+  // The match fights in the ring (arena.h make_ring: a 5 m square of crates inside ropes, the boxers 2.8 m apart);
+  // the other scenarios on the plain platform.
+  w->arena = o.scenario_id == Scenario::Match ? make_ring(o.seed, kRingMinStep, o.start_apart)
+                                              : make_arena(o.seed, w->tuning.arena_min_step, kBoxerSeparation, o.flat);
   w->model.dt = kPhysicsDt;
   add_static_arena(*w);
 
@@ -356,6 +372,7 @@ void step_world(World& w) {
   w.push_active = false;
   if (scenario.before_step) scenario.before_step(w);
   interaction_apply_forces(w);
+  ring_ropes_apply(w, kPhysicsDt);  // the ring's ropes push back a boxer past them (nothing without a ring)
   const auto t2 = clock::now();
 
   eng::physics::step2(w.model, w.data, physics_stages);

@@ -18,6 +18,7 @@
 #include "game/boxer.h"
 #include "game/cli.h"
 #include "game/health.h"
+#include "game/ring_ropes.h"
 
 namespace boxing {
 
@@ -83,6 +84,7 @@ struct World {
   std::unique_ptr<Interaction> interaction;  // the player's hands: drags, thrown objects, scripted and recorded input
   std::unique_ptr<Chaos> chaos;              // --chaos: seeded random input events (game/interaction/chaos.h)
   Health health;                             // measured every step (the report's health block)
+  RingRopesState ropes;                      // the match ring's ropes (ring_ropes.h): their push and who touched them
 };
 
 // Loads content (boxer, clips) from options.content_dir and builds the scenario (and --input's script).

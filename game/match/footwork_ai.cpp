@@ -92,6 +92,8 @@ bool footwork_ai_tick(World& w, int k, bool free, bool just_punched) {
   }
   if (f.was_moving) f.was_moving = false, f.last_move_end = now;
   if (!free || !standing_state(b.ctl.state.state)) return false;
+  // A stunned boxer only backs away or circles out (hurt, below), at half the cadence: its softer legs step less.
+  const bool stunned = b.ctl.state.state == BoxerState::Stunned;
   const auto& bst = b.ctl.balance_steps;
   if (bst.step.active || bst.recovering || bst.shifting >= 0) return false;
   const Eigen::Vector2d me = pelvis_xy(w, k), other = pelvis_xy(w, 1 - k);
@@ -119,7 +121,12 @@ bool footwork_ai_tick(World& w, int k, bool free, bool just_punched) {
     const double reach = mt.tuning.reach;
     const bool hurt = b.ctl.root_spring.consciousness() < t.hurt_below;
     const bool hit_lately = now - f.last_hit_at < mt.tuning.step_in_after_hit;
-    if (hurt && dist < reach + t.hurt_gap) {
+    // Stunned deeper than stunned_steps_above, the softer legs do not step on purpose (the balance steps still
+    // catch the body): stepping, they fell without a hit in 14-18 of 20 matches where they stood still in 10.
+    if (stunned && b.ctl.root_spring.consciousness() < t.stunned_steps_above) return false;
+    if (std::abs(turn) > t.pivot_beyond) {
+      m = FootworkMove::Pivot;
+    } else if (hurt && dist < reach + t.hurt_gap) {
       m = f.ai.rng.uniform() < 0.5 ? FootworkMove::Back : circle_move(w, k, heading);
     } else if (dist > reach + t.band_out && !(hit_lately && dist < reach + 0.3)) {
       m = FootworkMove::Forward;
@@ -137,7 +144,7 @@ bool footwork_ai_tick(World& w, int k, bool free, bool just_punched) {
   }
   if (m == FootworkMove::None) return false;
   if (!request_footwork(b, m, turn)) return false;
-  f.next_move = now + f.ai.rng.uniform(t.pause_min, t.pause_max);
+  f.next_move = now + (stunned ? t.stunned_pause_scale : 1.0) * f.ai.rng.uniform(t.pause_min, t.pause_max);
   return true;
 }
 

@@ -13,13 +13,16 @@ struct FootworkAiTuning {
   double band_out = 0.02;   // m past reach: the farthest (steps in beyond it)
   double hurt_gap = 0.45;   // m past reach a hurt boxer keeps (backs away, circles)
   double hurt_below = 0.65; // consciousness under this: hurt
-  double face_within = 0.30;  // rad: facing the opponent this well needs no pivot
-  double circle_rate = 0.7;   // lateral moves per second at range (Poisson), the style's footwork
+  double face_within = 0.30;  // rad: facing the opponent this well needs no pivot; a step turns at most max_turn ...
+  double pivot_beyond = 0.45;  // rad: ... and farther off than this, a pivot comes first
+  double circle_rate = 0.5;    // lateral moves per second at range (Poisson), the style's footwork
   double exit_share = 0.5;    // after a punch, the share that steps out or off the line at once ...
   double exit_within = 0.3;   // s ... decided this soon after the punch ended
-  double pause_min = 0.15, pause_max = 0.8;  // s between moves at range
-  double ring_margin = 0.55;  // m, the stance's centre keeps this far inside the ring's edge
-  double corner_inset = 0.6;  // m, a neutral corner's spot inside the ring's corner
+  double pause_min = 0.1, pause_max = 0.6;   // s between moves at range
+  double stunned_pause_scale = 2.0;  // a stunned boxer's pauses between moves x this ...
+  double stunned_steps_above = 0.45;  // ... and no moves at all below this consciousness
+  double ring_margin = 0.8;   // m, the stance's centre keeps this far inside the ring's edge
+  double corner_inset = 0.9;  // m, a neutral corner's spot inside the ring's corner
   double at_corner = 0.35;    // m: there
 };
 

@@ -4,6 +4,7 @@
 
 #include "engine/anim/motion_graph.h"
 #include "game/footwork.h"
+#include "game/character_builder.h"
 #include "game/match/hits.h"
 #include "game/match/match_internal.h"
 #include "game/world.h"
@@ -67,7 +68,6 @@ void match_setup(World& w) {
   mt.replay.init(static_cast<int>(kReplaySeconds * 60.0), static_cast<int>(w.data.q.size()));
   for (int k = 0; k < 2 && k < static_cast<int>(w.boxers.size()); ++k) {
     MatchFighter& f = mt.fighter[k];
-    w.boxers[k].ctl.mark = w.boxers[k].desired.pose.root_position.head<2>();  // where the pelvis starts
     f.ai.rng = Rng(w.options.seed * 0x9E3779B97F4A7C15ull + 0xF16A7ull + static_cast<uint64_t>(k));
     f.ai.style = draw_fighter_style(f.ai.rng, f.ai.tuning);
     // Both settle into guard first.
@@ -88,12 +88,17 @@ void match_setup(World& w) {
     b.settings.root_params.stun_time = mt.tuning.recovery_delay;
     b.settings.root_params.recovery_rate = mt.tuning.recovery_rate;
     b.settings.tuning.balance_step.replace_edge_foot = mt.tuning.replace_edge_feet;
+    // The legs collide with each other whole (add_boxer: the thighs only): in the ring's footwork the shanks and feet
+    // passed through each other (legs_through_s).
+    set_self_colliding(w.model, b.bodies, {b.bones.leg[0].shank, b.bones.leg[1].shank, b.bones.leg[0].foot,
+                                           b.bones.leg[1].foot});
     // The fight's balance: Kudoh's priorities, the trunk held upright over the com (balance_qp.h BalanceQpTuning).
     if (w.options.priorities != "off") {
       b.settings.tuning.qp.trunk_weight = mt.tuning.trunk_weight;
       b.settings.tuning.qp.com_weight = mt.tuning.com_weight;
     }
   }
+  footwork_setup(w);
 }
 
 void match_before_control(World& w) {
@@ -109,6 +114,7 @@ void match_before_control(World& w) {
     aim_punch(w, k, c, standing);
     if (f.player) {
       take_player_command(f, *walker, standing && !mt.over);
+      if (f.go_to_active) footwork_ai_tick(w, k, standing && !walker->has_plan(), false);  // the referee's errand
       continue;
     }
     if (mt.over) continue;
@@ -116,8 +122,9 @@ void match_before_control(World& w) {
     f.saw_punch = nullptr;
     if (v.punching) f.punching_until = w.data.time;
     const bool just_punched = !v.punching && w.data.time - f.punching_until < mt.tuning.footwork.exit_within;
-    if (footwork_ai_tick(w, k, v.free, just_punched)) continue;
+    // Punches and defences first (the graph takes a request when it can); the feet move when nothing was asked for.
     fighter_ai_tick(f.ai, *walker, v, kPhysicsDt);
+    if (!walker->has_plan()) footwork_ai_tick(w, k, v.free, just_punched);
   }
 }
 
@@ -132,6 +139,7 @@ void match_after_step(World& w) {
   read_hits(w);
   count_balance_steps_after_hit(w);
   referee(w);
+  measure_footwork(w);
 }
 
 }  // namespace boxing

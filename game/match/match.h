@@ -29,6 +29,7 @@
 #include "game/match/fighter_ai.h"
 #include "game/match/fighter_view.h"
 #include "game/match/footwork_ai.h"
+#include "game/match/footwork_metrics.h"
 #include "game/match/match_report.h"
 #include "game/match/referee.h"
 #include "game/match/replay.h"
@@ -103,20 +104,17 @@ struct MatchTuning {
   double min_down_time = 1.2;        // s down before the stand-up at the earliest
   double getup_consciousness = 0.6;  // consciousness set at the stand-up's start (the servo's gains with it)
   double count_seconds = 10.0;       // the referee's count: not up in time = knock-out
+  double count_when_away = 2.0;      // m, pelvis to pelvis: the standing boxer this far away, the count starts ...
+  double count_start_wait = 8.0;     // s after the knockdown at the latest (the referee waits only so long)
   double up_height = 0.8;            // share of the standing pelvis height that counts as up (with guard playing)
   double settle_time = 0.5;          // s up and still before the fight goes on
   double after_count = 0.75;         // consciousness at least this once up from a knockdown
-  double neutral_corner_within = 1.6;  // m, pelvis to pelvis: at a get-up's start a standing opponent this close goes to its mark
-  // m: a boxer set back on its mark (back_to_marks) is lifted when a body sinks deeper than this into the crates
-  // under it; less lifts for contacts the solver resolves anyway.
-  double reset_clearance = 0.03;
   // A boxer getting up: its thighs pass through each other, as they pass through the opponent: colliding, a leg left
   // behind the other caught on the other thigh and the boxer stood on one foot (docs/decisions/match-fight.md).
   bool getup_thighs_pass = true;
   // s in the stand-up without getting up: it is given up, the boxer sinks back (down, limp) and starts it again (the
   // stand-up is not a balance the body can always finish from where it got to; a retry starts it from the ground).
   double stand_up_give_up = 8.0;
-  double apart_time = 2.0;           // s both out of reach before the referee brings them back to their marks
   double step_in_after_hit = 2.0;    // s after a landed hit before the AI steps in (footwork) again
   // A hard hit short of a knockdown rocks the boxer back: at this much damage or more the stagger clip (two steps
   // back; the balance steps catch the rest) plays instead of the reaction in place (0 = never).
@@ -156,10 +154,13 @@ struct GetUp {
   std::string lying;                   // back | front ("" until chosen)
   double assist_sq_dt = 0.0, assist_time = 0.0;  // root assist torque^2 dt over the stand-up
   double assist_force_sq_dt = 0.0;               // root assist force^2 dt
-  // Up: placed back on its mark (back_to_marks): how far it was lifted out of the crates there, and how far (floor
-  // plane) the farther ankle stands from where it stood at the start (the clip's stance fitted to the same crates).
-  double reset_lift = 0.0, reset_feet_off = 0.0;  // m
   int retries = 0;  // stand-ups given up and started again (MatchTuning::stand_up_give_up)
+  // m: the closest the other boxer came to the downed one (pelvis to pelvis, floor plane) from down_at to up_at
+  // (measure_footwork; -1 until measured).
+  double count_distance_min = -1.0;
+  // s: the count starts once the standing boxer is in a neutral corner (MatchTuning::count_when_away from the downed
+  // one), or count_start_wait after the knockdown at the latest, as a referee starts it (< 0: not yet).
+  double count_from = -1.0;
 };
 
 // What the player asks of a boxer (keys, game/app.cpp): a punch, a defence or a step; taken by the motion graph like
@@ -196,7 +197,6 @@ struct MatchFighter {
   double still = 0.0;            // s lying still
   double settled = 0.0;          // s up and still (the end of a stand-up)
   int getup = -1;                // getups index of the current knockdown
-  double reset_lift = 0.0, reset_feet_off = 0.0;  // the last back_to_marks (GetUp::reset_lift, reset_feet_off)
   const char* saw_punch = nullptr;  // the other boxer started this punch on the last tick (for the AI)
   // The AI's footwork (footwork_ai.h): the earliest next move, when the last one ended, its way round the opponent
   // (+1 left), and the referee's errand (a neutral corner while the other is down).
@@ -228,9 +228,9 @@ struct Match {
   std::vector<GetUp> getups;
   double round_seconds = 180.0;
   bool over = false;
-  int resets = 0;  // times the referee brought the boxers back to their marks (after a get-up, or apart too long)
-  int apart_resets = 0;  // of those, apart too long (neither stepped back into reach)
-  double apart = 0.0;  // s both standing and out of reach of each other
+  int teleports = 0;   // a boxer's pose set directly after the start (footwork_metrics.h: a pelvis jump no velocity explains)
+  std::array<FootworkMetrics, 2> footwork;  // the footwork as measured (footwork_metrics.h)
+  FootworkMetricsTuning footwork_tuning;
   ReplayBuffer replay;  // the last kReplaySeconds of the bodies' coordinates at 60 Hz (the window's instant replay)
   std::string result;  // "" while fighting; set by a knock-out (or at the report: points)
 };

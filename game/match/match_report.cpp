@@ -23,14 +23,42 @@ MatchHud match_hud(const World& w) {
     h.side[k].player = f.player;
     h.side[k].state = boxer_state_name(w.boxers[k].ctl.state.state);
     if (f.getup >= 0 && !mt.over) {
-      const int down_s = static_cast<int>(t - mt.getups[f.getup].down_at);
-      const int count = std::min(static_cast<int>(mt.tuning.count_seconds), down_s + 1);
-      h.banner = std::string(k == 0 ? "RED" : "BLUE") + " DOWN   " + std::to_string(count);
+      const GetUp& g = mt.getups[f.getup];
+      // The count's number once it has started (the standing boxer in a neutral corner, referee.h).
+      h.banner = std::string(k == 0 ? "RED" : "BLUE") + " DOWN";
+      if (g.count_from >= 0.0) {
+        const int count = std::min(static_cast<int>(mt.tuning.count_seconds), static_cast<int>(t - g.count_from) + 1);
+        h.banner += "   " + std::to_string(count);
+      }
     }
   }
   if (mt.over) h.banner = mt.result;
   return h;
 }
+
+namespace {
+
+// Per boxer, the footwork as measured (footwork_metrics.h) and the ropes' contact time (ring_ropes.h).
+nlohmann::json footwork_report(const World& w) {
+  nlohmann::json out = nlohmann::json::array();
+  for (int k = 0; k < 2 && k < static_cast<int>(w.boxers.size()); ++k) {
+    const FootworkMetrics& m = w.match->footwork[k];
+    out.push_back({{"boxer", k},
+                   {"steps", m.steps},
+                   {"standing_s", m.standing_s},
+                   {"steps_per_minute_standing", m.standing_s > 0.0 ? 60.0 * m.steps / m.standing_s : 0.0},
+                   {"path_m", m.path_m},
+                   {"time_in_range_s", m.time_in_range_s},
+                   {"legs_through_s", m.legs_through_s},
+                   {"ring_exits", m.ring_exits},
+                   {"ring_exits_after_hit", m.ring_exits_after_hit},
+                   {"rope_contacts_s", w.ropes.contact_s[k]},
+                   {"teleports", m.teleports}});
+  }
+  return out;
+}
+
+}  // namespace
 
 nlohmann::json match_report(const World& w) {
   const Match& mt = *w.match;
@@ -55,14 +83,15 @@ nlohmann::json match_report(const World& w) {
   for (const GetUp& g : mt.getups)
     getups.push_back({{"boxer", g.boxer},
                       {"down_at_s", g.down_at},
+                      {"count_from_s", g.count_from},
                       {"up_at_s", g.up_at >= 0.0 ? nlohmann::json(g.up_at) : nlohmann::json(nullptr)},
                       {"lying", g.lying.empty() ? nlohmann::json(nullptr) : nlohmann::json(g.lying)},
                       {"root_assist_rms_nm", g.assist_time > 0 ? std::sqrt(g.assist_sq_dt / g.assist_time) : 0.0},
-                      {"reset_lift_m", g.reset_lift},
-                      {"reset_feet_off_m", g.reset_feet_off},
                       {"root_assist_force_rms_n", g.assist_time > 0 ? std::sqrt(g.assist_force_sq_dt / g.assist_time) : 0.0},
                       {"stand_up_s", g.assist_time},
-                      {"stand_up_retries", g.retries}});
+                      {"stand_up_retries", g.retries},
+                      {"count_distance_min_m", g.count_distance_min >= 0.0 ? nlohmann::json(g.count_distance_min)
+                                                                          : nlohmann::json(nullptr)}});
   auto pair = [&mt](auto get) { return nlohmann::json::array({get(mt.fighter[0]), get(mt.fighter[1])}); };
   std::string result = mt.result;
   if (result.empty()) {
@@ -98,11 +127,11 @@ nlohmann::json match_report(const World& w) {
            })},
           {"player_commands_taken", pair([](const MatchFighter& f) { return f.commands_taken; })},
           {"round_seconds", mt.round_seconds},
-          {"resets_to_marks", mt.resets},
-          {"apart_resets", mt.apart_resets},
           {"round", static_cast<int>(w.data.time / mt.round_seconds) + 1},
           {"ended_at_s", w.data.time},  // the run's end: a knockdown less than the count before it has no up_at_s yet
           {"getups", getups},
+          {"teleports", mt.teleports},
+          {"fighters", footwork_report(w)},
           {"result", result},
           {"events", events}};
 }

@@ -45,7 +45,9 @@ void pass_through_opponent(World& w, int k, bool on) {
     for (int g = b.bodies.first_geom[i]; g < b.bodies.first_geom[i] + b.bodies.geom_count[i]; ++g)
       w.model.geoms[g].mask = on ? ~other_group : 0xffffffffu;
   if (w.match->tuning.getup_thighs_pass)
-    set_self_colliding(w.model, b.bodies, {b.bones.leg[0].thigh, b.bones.leg[1].thigh}, !on);  // add_boxer's pair
+    set_self_colliding(w.model, b.bodies, {b.bones.leg[0].thigh, b.bones.leg[1].thigh, b.bones.leg[0].shank,
+                                           b.bones.leg[1].shank, b.bones.leg[0].foot, b.bones.leg[1].foot},
+                       !on);  // match_setup's leg pairs
 }
 
 // The get-up starts where the body lies: the stance re-based under it, so the stand-up clip is placed at the pelvis
@@ -197,7 +199,11 @@ void referee(World& w) {
     if (s.state == BoxerState::Down) while_down(w, k, g, speed);
     else if (s.state == BoxerState::GettingUp) while_getting_up(w, k, g, speed);
     // The count: not up in count_seconds is a knock-out.
-    if (f.getup >= 0 && !mt.over && t - g.down_at > tu.count_seconds) {
+    if (g.count_from < 0.0) {
+      const double apart = (w.data.x[pelvis].p - w.data.x[w.boxers[1 - k].bodies.body[0]].p).head<2>().norm();
+      if (apart >= tu.count_when_away || t - g.down_at >= tu.count_start_wait) g.count_from = t;
+    }
+    if (f.getup >= 0 && !mt.over && g.count_from >= 0.0 && t - g.count_from > tu.count_seconds) {
       mt.over = true;
       mt.result = "KO: boxer " + std::to_string(1 - k) + " wins (boxer " + std::to_string(k) + " not up at " +
                   std::to_string(static_cast<int>(tu.count_seconds)) + ")";

@@ -38,3 +38,32 @@ TEST(Arena, FlatIsOneLevelPlatform) {
   for (const auto& c : a.crates) EXPECT_NEAR(c.center.z() + c.half_extents.z(), 0.30, 1e-12);
   for (const auto& s : a.stances) EXPECT_NEAR(s.lead_top - s.rear_top, 0.0, 1e-12);
 }
+
+// The match's ring (make_ring): 5 m inside, walkable steps between neighbours, the marks out of reach of each other
+// with the arena's step between the feet, four corners on the ropes' square.
+TEST(Arena, RingIsFiveMetresInsideWithWalkableStepsAndMarksApart) {
+  for (uint64_t seed = 1; seed <= 50; ++seed) {
+    const Arena a = make_ring(seed);
+    const Ring& r = a.ring;
+    ASSERT_TRUE(r.present);
+    EXPECT_NEAR(2.0 * r.half_inside, 5.0, 1e-12);
+    EXPECT_NEAR(r.top_mean, 0.30, 0.02) << "seed " << seed;
+    // Every cell centre's top (the apron's too) within 8 cm of its neighbours'.
+    for (double x = -2.75; x <= 2.76; x += 0.5)
+      for (double y = -2.75; y <= 2.76; y += 0.5) {
+        const double h = a.top_at(x, y);
+        EXPECT_GT(h, kFloorTop);
+        if (std::abs(x) < 2.5 && std::abs(y) < 2.5) EXPECT_NEAR(h, 0.30, 0.04 + 1e-9) << "seed " << seed;
+        if (x + 0.5 < 2.76) EXPECT_LE(std::abs(a.top_at(x + 0.5, y) - h), 0.08 + 1e-9) << x << "," << y;
+        if (y + 0.5 < 2.76) EXPECT_LE(std::abs(a.top_at(x, y + 0.5) - h), 0.08 + 1e-9) << x << "," << y;
+      }
+    EXPECT_GE((a.stances[0].position - a.stances[1].position).norm(), 2.5);
+    for (const Stance& s : a.stances) {
+      EXPECT_GE(std::abs(s.lead_top - s.rear_top), kRingMinStep - 1e-12) << "seed " << seed;
+      EXPECT_TRUE(r.inside(s.position, 1.0));
+    }
+    for (const Eigen::Vector2d& c : r.corners) EXPECT_NEAR(c.cwiseAbs().minCoeff(), r.half_inside, 1e-12);
+    EXPECT_NEAR((r.corners[Ring::kRed] + r.corners[Ring::kBlue]).norm(), 0.0, 1e-12);  // opposite corners
+  }
+  EXPECT_FALSE(make_arena(1).ring.present);
+}

@@ -81,7 +81,7 @@ double pelvis_distance(const World& w) {
 }
 
 // Boxer k down and kept down (its stand-up would start at min_down_time: moved past the count, it never does): the
-// banner counts "RED DOWN   1" to "RED DOWN   10" (BLUE for boxer 1), one number a second from the knockdown, and the
+// banner counts "RED DOWN   1" to "RED DOWN   10" (BLUE for boxer 1), one number a second from the count's start, and the
 // tick the count passes count_seconds the match is over, a KO for the other boxer, shown on the banner and in the
 // report. The boxer still lies there: nothing but the count ended it.
 void knock_out_at_ten(int k) {
@@ -92,24 +92,29 @@ void knock_out_at_ten(int k) {
   mt.tuning.min_down_time = 2.0 * mt.tuning.count_seconds;
   run(world, 1.0);
   ASSERT_TRUE(put_down(world, k, -toward_other(world, k))) << "boxer " << k << " did not go down";
-  const double down_at = mt.getups[mt.fighter[k].getup].down_at;
+  const GetUp& g = mt.getups[mt.fighter[k].getup];
   const std::string side = k == 0 ? "RED" : "BLUE";
   std::vector<std::string> banners;
   double over_at = -1.0;
-  for (int i = 0; i < static_cast<int>((mt.tuning.count_seconds + 1.0) * kTicksPerSecond) && over_at < 0; ++i) {
+  const double most = mt.tuning.count_start_wait + mt.tuning.count_seconds + 1.0;
+  for (int i = 0; i < static_cast<int>(most * kTicksPerSecond) && over_at < 0; ++i) {
     const std::string b = match_hud(world).banner;
     if (banners.empty() || banners.back() != b) banners.push_back(b);
-    EXPECT_FALSE(mt.over) << "over at " << world.data.time - down_at << " s into the count";
+    EXPECT_FALSE(mt.over) << "over at " << world.data.time - g.count_from << " s into the count";
     step_world(world);
     if (mt.over) over_at = world.data.time;
   }
+  // "RED DOWN" until the count starts (the other in a neutral corner), then one number a second.
   std::vector<std::string> count;
+  if (!banners.empty() && banners.front() == side + " DOWN") count.push_back(side + " DOWN");
   for (int n = 1; n <= 10; ++n) count.push_back(side + " DOWN   " + std::to_string(n));
   EXPECT_EQ(banners, count);
   ASSERT_GE(over_at, 0.0) << "no knock-out " << mt.tuning.count_seconds + 1.0 << " s after the knockdown";
   // The first tick past the count (kPhysicsDt = 1/240 s): not a tick earlier, not a tick later.
-  EXPECT_GT(over_at - down_at, mt.tuning.count_seconds);
-  EXPECT_LE(over_at - down_at, mt.tuning.count_seconds + 1.0 / kTicksPerSecond + 1e-9);
+  ASSERT_GE(g.count_from, g.down_at);
+  EXPECT_LE(g.count_from, g.down_at + mt.tuning.count_start_wait + 1e-9);
+  EXPECT_GT(over_at - g.count_from, mt.tuning.count_seconds);
+  EXPECT_LE(over_at - g.count_from, mt.tuning.count_seconds + 1.0 / kTicksPerSecond + 1e-9);
   const std::string ko = "KO: boxer " + std::to_string(1 - k) + " wins (boxer " + std::to_string(k) + " not up at 10)";
   EXPECT_EQ(mt.result, ko);
   EXPECT_EQ(match_hud(world).banner, ko);
@@ -121,48 +126,37 @@ void knock_out_at_ten(int k) {
 TEST(MatchRules, ADownedRedBoxerNotUpAtTheCountOfTenLosesByKnockOut) { knock_out_at_ten(0); }
 TEST(MatchRules, ADownedBlueBoxerNotUpAtTheCountOfTenLosesByKnockOut) { knock_out_at_ten(1); }
 
-// Red put down toward blue; its get-up starts at min_down_time, lying still. Blue, standing within
-// neutral_corner_within of red's pelvis then, is sent to its mark (one reset, of blue only); with the distance set
-// below theirs, the same get-up sends nobody anywhere.
-TEST(MatchRules, AStandingOpponentCloseToAGetUpIsSentToItsMark) {
-  for (const bool near : {true, false}) {
-    SCOPED_TRACE(near ? "within the distance" : "out of it");
-    auto w = idle_match();
-    ASSERT_TRUE(w);
-    World& world = *w;
-    Match& mt = *world.match;
-    run(world, 1.0);
-    ASSERT_TRUE(put_down(world, 0, toward_other(world, 0)));
-    const Boxer& blue = world.boxers[1];
-    int ticks = 0;
-    for (; ticks < 8 * kTicksPerSecond && world.boxers[0].ctl.state.state != BoxerState::GettingUp; ++ticks) {
-      if (!near) mt.tuning.neutral_corner_within = 0.5 * pelvis_distance(world);
-      const int resets = mt.resets;
-      const Eigen::Vector2d red_before = world.data.x[world.boxers[0].bodies.body[0]].p.head<2>();
-      const double apart = pelvis_distance(world);
-      const Eigen::Vector2d blue_off = world.data.x[blue.bodies.body[0]].p.head<2>() - blue.ctl.mark;
-      step_world(world);
-      if (world.boxers[0].ctl.state.state != BoxerState::GettingUp) continue;
-      // The tick the get-up started.
-      ASSERT_EQ(blue.ctl.state.state, BoxerState::Guard);
-      if (near) {
-        ASSERT_LT(apart, mt.tuning.neutral_corner_within) << "red fell " << apart << " m from blue";
-        EXPECT_EQ(mt.resets, resets + 1);
-        // On its mark: the start's placement set again, which is where the mark was taken, so exactly (the referee
-        // runs after the step: nothing has moved it yet). measured: 0 m (0.62 m off before, pushed by red's fall);
-        // bound 1e-9 m.
-        const Eigen::Vector2d off = world.data.x[blue.bodies.body[0]].p.head<2>() - blue.ctl.mark;
-        EXPECT_LT(off.norm(), 1e-9) << "blue " << off.norm() << " m off its mark (" << blue_off.norm() << " before)";
-      } else {
-        EXPECT_EQ(mt.resets, resets);
-      }
-      // Red stays where it lies, not sent anywhere: lying still, its pelvis moved under still_speed for the tick
-      // (0.4 m/s x 1/240 s = 1.7 mm; measured 9e-8 m); a reset would move it by a metre.
-      EXPECT_LT((world.data.x[world.boxers[0].bodies.body[0]].p.head<2>() - red_before).norm(),
-                mt.tuning.still_speed / kTicksPerSecond);
-    }
-    EXPECT_EQ(world.boxers[0].ctl.state.state, BoxerState::GettingUp) << "no get-up in 8 s";
+// Red put down toward blue: blue is sent to the neutral corner farthest from red (footwork_ai.h neutral_corner) and
+// walks there (nobody is set anywhere: teleports stay 0); the count starts once blue is count_when_away from red or
+// count_start_wait after the knockdown. Bound: blue 0.5 m farther from red before red is up or 6 s have passed
+// (measured 0.76 m: the walk's moves carry 0.25-0.3 m per 1-1.5 s, the first spent turning to face red).
+TEST(MatchRules, AStandingOpponentWalksToANeutralCornerWhileTheOtherIsDown) {
+  auto w = idle_match();
+  ASSERT_TRUE(w);
+  World& world = *w;
+  Match& mt = *world.match;
+  run(world, 1.0);
+  ASSERT_TRUE(put_down(world, 0, toward_other(world, 0)));
+  const double down_at = world.data.time;
+  ASSERT_TRUE(mt.fighter[1].go_to_active);
+  // The corner farthest from red among the ring's four (inset corner_inset).
+  const Eigen::Vector2d red = world.data.x[world.boxers[0].bodies.body[0]].p.head<2>();
+  const Eigen::Vector2d half = ring_half_size(world) - Eigen::Vector2d::Constant(mt.tuning.footwork.corner_inset);
+  for (int sx : {-1, 1})
+    for (int sy : {-1, 1})
+      EXPECT_LE((Eigen::Vector2d(sx * half.x(), sy * half.y()) - red).norm(), (mt.fighter[1].go_to - red).norm() + 1e-9);
+  const double start = pelvis_distance(world);
+  double farthest = start;
+  while (world.data.time < down_at + 6.0 && world.boxers[0].ctl.state.state != BoxerState::Guard) {
+    step_world(world);
+    farthest = std::max(farthest, pelvis_distance(world));
   }
+  std::printf("  blue from red: %.2f m at the knockdown, %.2f m at the farthest\n", start, farthest);
+  EXPECT_GE(farthest - start, 0.5);
+  EXPECT_EQ(mt.teleports, 0);
+  ASSERT_FALSE(mt.getups.empty());
+  const GetUp& g = mt.getups.front();
+  if (g.count_from >= 0.0) EXPECT_GE(g.count_from, down_at);
 }
 
 // A 4 s round with no knock-out: red jabs an idle blue twice (player commands at 2 s), blue throws nothing. At the
