@@ -4,8 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 
 #include "engine/control/biped/capture_point.h"
 #include "engine/control/biped/support_polygon.h"

@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 
 #include "game/boxer.h"
 
@@ -115,7 +113,6 @@ void footwork_steps(const Arena& arena, Boxer& b, const Eigen::Vector2d sole[2],
       ++f.phase;
       continue;
     }
-    if (getenv("FWTRACE")) fprintf(stderr, "  FW b%d phase %d foot %d sole (%.2f %.2f) other (%.2f %.2f) want (%.2f %.2f)-(%.2f %.2f) to (%.2f %.2f)\n", b.index, f.phase, j, sole[j].x(), sole[j].y(), sole[o].x(), sole[o].y(), want[j].x(), want[j].y(), want[o].x(), want[o].y(), to.x(), to.y());
     st.shifting = j;
     st.shift_time = 0.0;
     st.return_to = to;

@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 
 #include "game/footwork.h"
 #include "game/match/fighter_view.h"
@@ -55,7 +53,6 @@ FootworkMove circle_move(World& w, int k, double heading) {
   MatchFighter& f = w.match->fighter[k];
   const Eigen::Vector2d me = pelvis_xy(w, k), other = pelvis_xy(w, 1 - k);
   const Eigen::Vector2d half = ring_half_size(w);
-  (void)me;
   const double room = std::min(half.x() - std::abs(other.x()), half.y() - std::abs(other.y()));
   const Eigen::Vector2d fwd(std::cos(heading), std::sin(heading)), left(-fwd.y(), fwd.x());
   int side = f.circle_side;
@@ -79,13 +76,6 @@ bool footwork_ai_tick(World& w, int k, bool free, bool just_punched) {
   Boxer& b = w.boxers[k];
   MatchFighter& f = mt.fighter[k];
   const double now = w.data.time;
-  if (getenv("FWTRACE") && int(now / kPhysicsDt) % 60 == 0) {
-    const auto& fw = b.ctl.footwork;
-    fprintf(stderr, "t=%.1f k=%d p=(%.2f %.2f) h=%.2f dist=%.2f st=%d move=%s ph=%d asked=%d shift=%d step=%d rec=%d free=%d c=%.2f\n", now, k,
-            w.data.x[b.bodies.body[0]].p.x(), w.data.x[b.bodies.body[0]].p.y(), b.stance.heading, reach_distance(w, k),
-            int(b.ctl.state.state), footwork_move_name(fw.move), fw.phase, fw.asked, b.ctl.balance_steps.shifting,
-            b.ctl.balance_steps.step.active, b.ctl.balance_steps.recovering, free, b.ctl.root_spring.consciousness());
-  }
   if (footwork_busy(b)) {
     f.was_moving = true;
     return false;

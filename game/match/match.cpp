@@ -17,9 +17,17 @@ using eng::anim::Clip;
 
 // The player's next command, taken when the boxer stands and the walk is free of a plan (a punch asked for during
 // another is taken once that one lets the graph go, like a buffered input in a fighting game).
-void take_player_command(MatchFighter& f, eng::anim::GraphWalker& walker, bool can) {
+void take_player_command(MatchFighter& f, Boxer& b, eng::anim::GraphWalker& walker, bool can) {
   if (f.queued > 0 && can && !walker.has_plan()) {
-    if (walker.request_clip(fight_command_clip(f.commands[0]))) ++f.commands_taken;
+    // Steps are footwork moves (footwork.h: the balance steps carry the feet); the rest are the graph's clips.
+    const FightCommand c = f.commands[0];
+    if (c == FightCommand::StepForward || c == FightCommand::StepBack) {
+      if (footwork_busy(b)) return;  // (kept queued until the move under way ends)
+      if (request_footwork(b, c == FightCommand::StepForward ? FootworkMove::Forward : FootworkMove::Back, 0.0))
+        ++f.commands_taken;
+    } else if (walker.request_clip(fight_command_clip(c))) {
+      ++f.commands_taken;
+    }
     f.ai.aim_body = false;
     std::copy(f.commands.begin() + 1, f.commands.end(), f.commands.begin());
     --f.queued;
@@ -113,7 +121,7 @@ void match_before_control(World& w) {
     const bool standing = standing_state(b.ctl.state.state);
     aim_punch(w, k, c, standing);
     if (f.player) {
-      take_player_command(f, *walker, standing && !mt.over);
+      take_player_command(f, b, *walker, standing && !mt.over);
       if (f.go_to_active) footwork_ai_tick(w, k, standing && !walker->has_plan(), false);  // the referee's errand
       continue;
     }
