@@ -343,11 +343,13 @@ TEST(Interaction, AGrabbedBallFollowsTheTargetAndClearLetsGoAndParksIt) {
 // boxer 0 over too (BoxerControlState::handled_until: Kudoh's priorities off, its joints under the soft speed limit,
 // world.cpp mark_handled_boxers) while they touch, though no hand was ever on boxer 0; before the drag neither is.
 TEST(Interaction, ABoxerStruckByADraggedBoxerIsHandledTooAndItsJointsAreSpeedLimited) {
-  auto w0 = make({"--scenario", "match", "--seed", "1"});
+  // (At fighting range: from the ring's marks 2.8 m apart the drag's 0.9 m never brings boxer 1 to boxer 0.)
+  auto w0 = make({"--scenario", "match", "--seed", "1", "--start-apart", "1.0"});
   const Eigen::Vector3d p0 = w0->data.x[w0->boxers[0].bodies.body[0]].p, p1 = w0->data.x[w0->boxers[1].bodies.body[0]].p;
   Eigen::Vector3d toward = p0 - p1;
   toward.z() = 0.0;
-  auto w = make({"--scenario", "match", "--seed", "1"}, {drag(0.5, 1, "chest", 0.9 * toward.normalized(), 0.8, true)});
+  auto w = make({"--scenario", "match", "--seed", "1", "--start-apart", "1.0"},
+                {drag(0.5, 1, "chest", 0.9 * toward.normalized(), 0.8, true)});
   bool handled_before = false, handled_by_contact = false, limited = false;
   while (w->data.time < 0.5 - 1e-9) {
     boxing::step_world(*w);
