@@ -113,6 +113,7 @@ void footwork_steps(const Arena& arena, Boxer& b, const Eigen::Vector2d sole[2],
       ++f.phase;
       continue;
     }
+    if (f.phase == 1) f.goal = 0.5 * (sole[0] + sole[1]) + f.delta;  // (qp_balance.cpp support_target)
     st.shifting = j;
     st.shift_time = 0.0;
     st.return_to = to;

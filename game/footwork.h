@@ -23,11 +23,13 @@ struct FootworkTuning {
   double side_stride = 0.25;  // m, ... left or right
   double max_turn = 0.5;      // rad, the most a move turns the heading
   double turn_rate = 2.5;     // rad/s, the heading's turn before the feet follow
-  double swing = 0.34;        // s, each step's swing (the return step's unhurried 0.45 s is the recovery's)
-  double shift_speed = 0.8;   // m/s, the com target's move over the stance foot before the lift
+  double swing = 0.28;        // s, each step's swing (the return step's unhurried 0.45 s is the recovery's)
+  double shift_speed = 1.6;   // m/s, the com target's move over the stance foot before the lift
   double unload_share = 0.2;  // ... or as soon as the foot bears less than this share of the body's weight
   double min_shift = 0.08;    // s of weight shift at least before a foot lifts
   double lift_margin = 0.03;  // m, the capture point at touch-down this far inside the stance and landing soles
+  double goal_after = 0.3;    // share of a swing after which the com aims at the move's end (FootworkState::goal);
+                              // from the lift (0) the com fell onto the swinging foot and it dragged (seed 5, 1 s)
   double skip_within = 0.04;  // m, the following foot stays down when its place is this close already
   double give_up = 4.0;       // s, a move not done by then is dropped (the balance took the feet over)
 };
@@ -35,6 +37,7 @@ struct FootworkTuning {
 struct FootworkState {
   FootworkMove move = FootworkMove::None;
   Eigen::Vector2d delta = Eigen::Vector2d::Zero();  // world m: the stance's displacement this move
+  Eigen::Vector2d goal = Eigen::Vector2d::Zero();   // world m: the feet's middle where the move ends (the com's aim)
   double turn_left = 0.0;  // rad still to turn the heading before the first step
   int phase = 0;           // 0: turning; 1: first foot asked / stepping; 2: second foot; 3: done
   int first = 0;           // the foot that steps first (0 left / lead, 1 right / rear)

@@ -19,6 +19,7 @@
 #include "game/balance/com_support.h"
 #include "game/balance/stand_up.h"
 #include "game/boxer.h"
+#include "game/footwork.h"
 
 namespace boxing {
 
@@ -289,6 +290,15 @@ Eigen::Vector2d support_target(QpBalance& q, BalanceTick& tick, const QpStep& s,
   const bool held = step.active && step.returning && !step.quick;
   if (held) {
     contact_centre(in.contacts, b.bodies.body[b.bones.foot[1 - step.foot]], target);
+    v_d.setZero();
+  }
+  // A footwork step's swing, once the foot is up (FootworkTuning::goal_after): the com aims at the move's end (the
+  // feet's middle there) instead of staying over the stance foot, so it arrives moving the move's way and the next
+  // foot can lift at once (held over the stance foot, it had to travel the whole stride from rest after each
+  // landing: 1.5-2.5 s a move, and a move back went forward; tests/game/footwork_test.cpp).
+  if (step.active && step.quick && footwork_busy(b) &&
+      step.elapsed > b.settings.tuning.footwork.goal_after * step.duration) {
+    target = b.ctl.footwork.goal;
     v_d.setZero();
   }
   const bool quick_shift = return_shift && b.ctl.balance_steps.return_duration > 0.0;

@@ -199,8 +199,9 @@ struct MatchFighter {
   int getup = -1;                // getups index of the current knockdown
   const char* saw_punch = nullptr;  // the other boxer started this punch on the last tick (for the AI)
   // The AI's footwork (footwork_ai.h): the earliest next move, when the last one ended, its way round the opponent
-  // (+1 left), and the referee's errand (a neutral corner while the other is down).
-  double next_move = 0.0, last_move_end = 0.0, punching_until = -1e9;
+  // (+1 left), and the referee's errand (a neutral corner while the other is down). The first move comes 1 s in: the
+  // boxers settle into their guard on the crates first.
+  double next_move = 1.0, last_move_end = 0.0, punching_until = -1e9;
   bool was_moving = false;
   int circle_side = 1;
   bool go_to_active = false;

@@ -16,6 +16,7 @@
 #include "game/match/fighter_ai.h"
 #include "game/match/punch_aim.h"
 #include "game/seed_rate.h"
+#include "game/footwork.h"
 #include "game/match/match.h"
 #include "game/world.h"
 
@@ -82,7 +83,7 @@ std::string punches_obey_the_rules(const World& w) {
   }
   for (int k = 0; k < 2; ++k) {
     why.check(m.fighter[k].thrown == thrown[k] && m.fighter[k].landed == landed[k], "the counts disagree");
-    why.check(thrown[k] >= 6, "boxer " + std::to_string(k) + " threw " + std::to_string(thrown[k]));  // the AI punches
+    why.check(thrown[k] >= 4, "boxer " + std::to_string(k) + " threw " + std::to_string(thrown[k]));  // the AI punches
   }
   why.check(landed[0] + landed[1] >= 3, std::to_string(landed[0] + landed[1]) + " landed");
   why.check(static_cast<int>(m.events.size()) > landed[0] + landed[1], "everything landed");  // not everything lands
@@ -107,8 +108,9 @@ void push_chest(World& w, int k, double toward, double force, double duration, d
 // The fight's punches, seeds 1-3, 20 s each (a seed passes when every punch thrown obeys the rules below, each boxer
 // throws at least 6, at least 3 land, not all of them, and no boxer falls without a hit).
 // measured (seeds 1-10, the first 20 s of 30-s runs): 10-16 thrown a boxer, 4-10 landed, no fall without a hit. bound:
-// every seed (the rules are the match's own bookkeeping, not a rate); 6 thrown a boxer (with the ring's footwork,
-// measured 7-15: its moves hold the punches while the feet are up), 3 landed, under the fewest measured.
+// every seed (the rules are the match's own bookkeeping, not a rate); 4 thrown a boxer (with the ring's footwork,
+// measured 7-15: its moves hold the punches while the feet are up; with its 1.1-s moves, 5-12 on seeds 1-3, the
+// boxers walking in from 2.8 m), 3 landed, under the fewest measured.
 TEST(Match, PunchesLandOnlyThroughTheStrikingGloveOnHeadOrTorsoAtSpeed) {
   const seed_rate::Rate r = seed_rate::over_seeds("match 20 s: the punches' bookkeeping", 1, 3, [](int seed) {
     auto w = run_match(seed, 20.0);
@@ -376,7 +378,9 @@ std::vector<HardHit> hard_hits(int seed, double rock, double at_least) {
   const auto pelvis = [&](int k) { return Eigen::Vector2d(world.data.x[world.boxers[k].bodies.body[0]].p.head<2>()); };
   // Each landed punch (an event is logged when thrown and marked landed at its first touch), from the step it lands:
   // where the hit boxer stood and which way is away from the thrower; then, for 1.5 s, the most it went that way.
-  struct Seen { size_t event; double t; Eigen::Vector2d from, away; double back = -1e9; };
+  // A footwork move the hit boxer starts after the hit (footwork.h: the AI backs away when hurt, or steps off the line)
+  // ends the watch: what is measured is what the hit did, not where the feet went on purpose afterwards.
+  struct Seen { size_t event; double t; Eigen::Vector2d from, away; double back = 0.0; bool stepped = false; };
   std::vector<Seen> seen;
   std::vector<bool> registered;
   while (world.data.time < kHardHitSeconds) {
@@ -390,8 +394,11 @@ std::vector<HardHit> hard_hits(int seed, double rock, double at_least) {
       seen.push_back({i, world.data.time, pelvis(k), (pelvis(k) - pelvis(e.boxer)).normalized()});
     }
     for (Seen& h : seen) {
-      if (world.data.time > h.t + 1.5) continue;
-      h.back = std::max(h.back, (pelvis(1 - m.events[h.event].boxer) - h.from).dot(h.away));
+      const int k = 1 - m.events[h.event].boxer;
+      const FootworkState& fw = world.boxers[k].ctl.footwork;
+      h.stepped = h.stepped || (footwork_busy(world.boxers[k]) && fw.started > h.t);
+      if (world.data.time > h.t + 1.5 || h.stepped) continue;
+      h.back = std::max(h.back, (pelvis(k) - h.from).dot(h.away));
     }
   }
   // Damage and rocking of each, read at the end (its impact window long closed).
@@ -432,9 +439,12 @@ TEST(Match, AHardHitRocksTheBoxerBack) {
   const auto [still, still_failed] = count("rocking off", in_place, [&](const HardHit& h) { return h.back < kBack; });
   ASSERT_GE(rocked.size(), 4u) << "too few hard hits to show anything";
   ASSERT_GE(in_place.size(), 4u) << "too few hard hits to show anything";
-  // (With the ring's footwork 1 of 4 went back past kBack on seeds 1-4, 3 of 4 before it, untraced: at least one.)
-  EXPECT_GE(back, 1) << back << " of " << rocked.size() << " rocked back:" << back_failed;
-  EXPECT_GE(10 * still, 8 * int(in_place.size())) << still << " of " << in_place.size() << " in place:" << still_failed;
+  // Measured with the ring's footwork (the watch ends at a move begun after the hit): rocked, 5 of 7 went back past
+  // kBack; off, 6 of 10 stayed in place, the other 4 carried 0.14-0.42 m by a move already under way at the hit (it
+  // finishes; cancelling it at a rock left stances stretched: falls without a hit rose from 2 to 8 in 20 matches).
+  // Bounds: rocked back on at least half, in place on at least half with rocking off.
+  EXPECT_GE(2 * back, int(rocked.size())) << back << " of " << rocked.size() << " rocked back:" << back_failed;
+  EXPECT_GE(2 * still, int(in_place.size())) << still << " of " << in_place.size() << " in place:" << still_failed;
 }
 
 
