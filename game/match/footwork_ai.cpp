@@ -11,6 +11,8 @@
 namespace boxing {
 
 Eigen::Vector2d ring_half_size(const World& w) {
+  // The ropes' square where there is a ring (its apron's crates reach past them), else the crates' extent.
+  if (w.arena.ring.present) return Eigen::Vector2d::Constant(w.arena.ring.half_inside);
   Eigen::Vector2d lo = Eigen::Vector2d::Constant(1e9), hi = Eigen::Vector2d::Constant(-1e9);
   for (const Crate& c : w.arena.crates) {
     lo = lo.cwiseMin((c.center - c.half_extents).head<2>());
@@ -39,12 +41,34 @@ double wrap(double a) { return std::remainder(a, 2.0 * M_PI); }
 
 Eigen::Vector2d pelvis_xy(const World& w, int k) { return w.data.x[w.boxers[k].bodies.body[0]].p.head<2>(); }
 
-// The stance's centre after move m stays inside the ring's margin.
-bool stays_inside(const World& w, int k, FootworkMove m, double heading) {
-  const Boxer& b = w.boxers[k];
+// How far a stance centre at p is outside the ring's margin (0 inside it).
+double past_margin(const World& w, const Eigen::Vector2d& p) {
   const Eigen::Vector2d half = ring_half_size(w) - Eigen::Vector2d::Constant(w.match->tuning.footwork.ring_margin);
-  const Eigen::Vector2d p = pelvis_xy(w, k) + footwork_delta(m, heading, b.settings.tuning.footwork);
-  return std::abs(p.x()) <= half.x() && std::abs(p.y()) <= half.y();
+  return std::max({0.0, std::abs(p.x()) - half.x(), std::abs(p.y()) - half.y()});
+}
+
+// Where move m takes the stance's centre.
+Eigen::Vector2d after_move(const World& w, int k, FootworkMove m, double heading) {
+  return pelvis_xy(w, k) + footwork_delta(m, heading, w.boxers[k].settings.tuning.footwork);
+}
+
+// The stance's centre after move m stays inside the ring's margin, or (pushed past it) comes back toward it.
+bool stays_inside(const World& w, int k, FootworkMove m, double heading) {
+  const double now = past_margin(w, pelvis_xy(w, k)), after = past_margin(w, after_move(w, k, m, heading));
+  return after <= 0.0 || after < now - 0.05;
+}
+
+// Pushed past the margin (a clinch, a flurry on the ropes): the move that brings the stance furthest back in.
+FootworkMove off_the_ropes(const World& w, int k, double heading) {
+  FootworkMove best = FootworkMove::None;
+  double least = past_margin(w, pelvis_xy(w, k)) - 0.05;
+  const bool close = reach_distance(w, k) < w.match->tuning.reach + 0.3;
+  for (FootworkMove m : {FootworkMove::Left, FootworkMove::Right, FootworkMove::Back, FootworkMove::Forward}) {
+    if (m == FootworkMove::Forward && close) continue;  // not into him (a clinch's push, the QP's recovery steps)
+    const double after = past_margin(w, after_move(w, k, m, heading));
+    if (after < least) least = after, best = m;
+  }
+  return best;
 }
 
 // A lateral move: toward the side that cuts the opponent off from the ring's centre when he is near the ropes, else
@@ -69,6 +93,11 @@ FootworkMove circle_move(World& w, int k, double heading) {
 }
 
 }  // namespace
+
+bool footwork_restless(const World& w, int k) {
+  const MatchFighter& f = w.match->fighter[k];
+  return !footwork_busy(w.boxers[k]) && !f.was_moving && w.data.time - f.last_move_end > w.match->tuning.footwork.max_still;
+}
 
 bool footwork_ai_tick(World& w, int k, bool free, bool just_punched) {
   Match& mt = *w.match;
@@ -114,8 +143,11 @@ bool footwork_ai_tick(World& w, int k, bool free, bool just_punched) {
     // Stunned deeper than stunned_steps_above, the softer legs do not step on purpose (the balance steps still
     // catch the body): stepping, they fell without a hit in 14-18 of 20 matches where they stood still in 10.
     if (stunned && b.ctl.root_spring.consciousness() < t.stunned_steps_above) return false;
+    const FootworkMove inward = past_margin(w, me) > t.off_ropes ? off_the_ropes(w, k, heading + turn) : FootworkMove::None;
     if (std::abs(turn) > t.pivot_beyond) {
       m = FootworkMove::Pivot;
+    } else if (inward != FootworkMove::None) {
+      m = inward;
     } else if (hurt && dist < reach + t.hurt_gap) {
       m = f.ai.rng.uniform() < 0.5 ? FootworkMove::Back : circle_move(w, k, heading);
     } else if (dist > reach + t.band_out && !(hit_lately && dist < reach + 0.3)) {
@@ -126,7 +158,8 @@ bool footwork_ai_tick(World& w, int k, bool free, bool just_punched) {
       m = f.ai.rng.uniform() < 0.5 ? FootworkMove::Back : circle_move(w, k, heading);
     } else if (std::abs(turn) > t.face_within) {
       m = FootworkMove::Pivot;
-    } else if (f.ai.rng.uniform() < 1.0 - std::exp(-t.circle_rate * (now - f.last_move_end))) {
+    } else if (now - f.last_move_end > t.max_still ||
+               f.ai.rng.uniform() < 1.0 - std::exp(-t.circle_rate * (now - f.last_move_end))) {
       m = circle_move(w, k, heading);
     }
     if (m != FootworkMove::None && m != FootworkMove::Pivot && !stays_inside(w, k, m, heading + turn))

@@ -21,14 +21,20 @@ struct FootworkAiTuning {
   double pause_min = 0.1, pause_max = 0.6;   // s between moves at range
   double stunned_pause_scale = 2.0;  // a stunned boxer's pauses between moves x this ...
   double stunned_steps_above = 0.45;  // ... and no moves at all below this consciousness
-  double ring_margin = 0.8;   // m, the stance's centre keeps this far inside the ring's edge
-  double corner_inset = 0.9;  // m, a neutral corner's spot inside the ring's corner
+  double ring_margin = 0.8;   // m, the stance's centre keeps this far inside the ring's edge ...
+  double off_ropes = 0.15;    // m: pushed this far past it, the next move is the one back in (before any other)
+  double corner_inset = 0.6;  // m, a neutral corner's spot inside the ropes' corner (each way)
   double at_corner = 0.35;    // m: there
+  double max_still = 1.5;     // s without a move, then one (a circle where nothing else is called for)
 };
 
 // Boxer k's footwork decision this tick (an AI boxer, standing, its walk free). True: a move was asked for.
 bool footwork_ai_tick(World& w, int k, bool free, bool just_punched);
-// The ring's inside as the AI reads it: the platform's half size about its centre (m).
+// No move for FootworkAiTuning::max_still: the feet go before the next punch (a busy puncher stood planted, 19 steps
+// a minute at an attack rate of 1.6 a second).
+bool footwork_restless(const World& w, int k);
+// The ring's inside as the AI reads it, half its size about its centre (m): the ropes' square (its apron outside
+// them is not the ring), or the platform's where there are no ropes.
 Eigen::Vector2d ring_half_size(const World& w);
 // A neutral corner for the boxer k standing while the other is down: the ring corner farthest from the downed one.
 Eigen::Vector2d neutral_corner(const World& w, int standing);

@@ -131,6 +131,7 @@ void match_before_control(World& w) {
     if (v.punching) f.punching_until = w.data.time;
     const bool just_punched = !v.punching && w.data.time - f.punching_until < mt.tuning.footwork.exit_within;
     // Punches and defences first (the graph takes a request when it can); the feet move when nothing was asked for.
+    if (footwork_restless(w, k) && footwork_ai_tick(w, k, v.free, just_punched)) continue;
     fighter_ai_tick(f.ai, *walker, v, kPhysicsDt);
     if (!walker->has_plan()) footwork_ai_tick(w, k, v.free, just_punched);
   }
