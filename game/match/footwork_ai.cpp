@@ -132,6 +132,7 @@ bool footwork_ai_tick(World& w, int k, bool free, bool just_punched) {
                                                      : (local.y() > 0 ? FootworkMove::Left : FootworkMove::Right);
     }
   } else {
+    if (!t.on) return false;
     const bool opponent_up = standing_state(w.boxers[1 - k].ctl.state.state);
     if (!opponent_up) return false;
     if (now < f.next_move) return false;

@@ -9,6 +9,7 @@ namespace boxing {
 struct World;
 
 struct FootworkAiTuning {
+  bool on = true;           // off: the AI boxers stand where they are (the referee's errands still walk them)
   double band_in = 0.10;    // m inside reach: the nearest the AI wants to stand while trading (steps back inside it)
   double band_out = 0.02;   // m past reach: the farthest (steps in beyond it)
   double hurt_gap = 0.45;   // m past reach a hurt boxer keeps (backs away, circles)
