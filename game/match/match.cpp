@@ -130,7 +130,8 @@ void match_before_control(World& w) {
     f.saw_punch = nullptr;
     if (v.punching) f.punching_until = w.data.time;
     const bool just_punched = !v.punching && w.data.time - f.punching_until < mt.tuning.footwork.exit_within;
-    // Punches and defences first (the graph takes a request when it can); the feet move when nothing was asked for.
+    // A boxer that has stood still too long moves its feet first; otherwise punches and defences first (the graph
+    // takes a request when it can), and the feet move when nothing was asked for.
     if (footwork_restless(w, k) && footwork_ai_tick(w, k, v.free, just_punched)) continue;
     fighter_ai_tick(f.ai, *walker, v, kPhysicsDt);
     if (!walker->has_plan()) footwork_ai_tick(w, k, v.free, just_punched);
