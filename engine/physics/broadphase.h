@@ -24,5 +24,8 @@ Aabb shape_aabb(const Shape& s, const Pose& x, double margin);
 // Every overlapping pair (i < j), in a deterministic sorted order. `pairs` is cleared and refilled; its capacity
 // (and the internal sort buffer's) is reused, so a warm call does not allocate.
 void broadphase_pairs(const Aabb* boxes, int n, std::vector<std::pair<int, int>>& pairs);
+// The same, leaving out the pairs of two boxes marked in `fixed` (nonzero: a static geom, which never collides with
+// another static one). The output is the first overload's less those pairs.
+void broadphase_pairs(const Aabb* boxes, const unsigned char* fixed, int n, std::vector<std::pair<int, int>>& pairs);
 
 }  // namespace eng::physics

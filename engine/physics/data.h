@@ -147,6 +147,7 @@ struct Data {
   int max_rows = 0;
   // collision workspace
   std::vector<Aabb> aabbs;
+  std::vector<unsigned char> geom_fixed;  // 1 for a static geom (its body has no DoF): no pairs among these
   std::vector<Pose> geom_x;             // world pose of each geom
   std::vector<std::pair<int, int>> pairs;
   std::vector<ContactPoint> cp_tmp;

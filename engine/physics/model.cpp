@@ -161,6 +161,8 @@ Data make_data(const Model& m) {
   d.MinvJT.assign(static_cast<size_t>(d.max_rows) * std::max(m.nv, 1), 0.0);
   const size_t ng = m.geoms.size();
   d.aabbs.assign(ng, Aabb{});
+  d.geom_fixed.assign(ng, 0);
+  for (size_t g = 0; g < ng; ++g) d.geom_fixed[g] = m.body_last_dof[m.geoms[g].body] < 0;
   d.geom_x.assign(ng, Pose{});
   d.pairs.reserve(std::min<size_t>(std::max<size_t>(64, ng * (ng - 1) / 2), size_t{1} << 16));
   d.cp_tmp.assign(8, ContactPoint{});

@@ -140,7 +140,7 @@ void collide(const Model& m, Data& d) {
     d.geom_x[g] = d.x[G.body] * G.local;
     d.aabbs[g] = shape_aabb(G.shape, d.geom_x[g], margin);
   }
-  broadphase_pairs(d.aabbs.data(), ng, d.pairs);
+  broadphase_pairs(d.aabbs.data(), d.geom_fixed.data(), ng, d.pairs);
   for (const auto& pr : d.pairs) {
     const Geom& ga = m.geoms[pr.first];
     const Geom& gb = m.geoms[pr.second];

@@ -194,6 +194,41 @@ TEST(Broadphase, FindsExactlyTheBruteForceOverlaps) {
   EXPECT_GT(brute.size(), 10u);
 }
 
+TEST(Broadphase, WithFixedBoxesFindsTheBruteForceOverlapsLessFixedPairs) {
+  // A grid of fixed crates (touching neighbours, as an arena's are), moving boxes over it, and two unbounded boxes
+  // (planes), one fixed and one not: every overlapping pair but the fixed-fixed ones, in the same sorted order.
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(-2, 2);
+  std::vector<Aabb> boxes;
+  std::vector<unsigned char> fixed;
+  for (int x = 0; x < 10; ++x)
+    for (int y = 0; y < 10; ++y) {
+      const Vec3 c(-2.25 + 0.5 * x, -2.25 + 0.5 * y, 0.15 + 0.01 * ((x * 7 + y * 3) % 5));
+      boxes.push_back(Aabb{c - Vec3(0.26, 0.26, 0.15), c + Vec3(0.26, 0.26, 0.15)});
+      fixed.push_back(1);
+    }
+  for (int i = 0; i < 60; ++i) {
+    const Vec3 c(u(rng), u(rng), 0.3 + 0.25 * std::abs(u(rng)));
+    const Vec3 h = Vec3(std::abs(u(rng)), std::abs(u(rng)), std::abs(u(rng))) * 0.1;
+    boxes.push_back(Aabb{c - h, c + h});
+    fixed.push_back(0);
+  }
+  for (int k = 0; k < 2; ++k) {
+    boxes.push_back(Aabb{Vec3::Constant(-1e18), Vec3::Constant(1e18)});
+    fixed.push_back(k == 0);
+  }
+  const int n = int(boxes.size());
+  std::vector<std::pair<int, int>> pairs, all, brute;
+  broadphase_pairs(boxes.data(), fixed.data(), n, pairs);
+  broadphase_pairs(boxes.data(), n, all);
+  for (int i = 0; i < n; ++i)
+    for (int j = i + 1; j < n; ++j)
+      if (boxes[i].overlaps(boxes[j]) && !(fixed[i] && fixed[j])) brute.emplace_back(i, j);
+  EXPECT_EQ(pairs, brute);
+  EXPECT_GT(brute.size(), 150u);        // the moving boxes touch crates and the planes
+  EXPECT_GT(all.size(), brute.size() + 300);  // the unmasked sweep also reports the crates' neighbour pairs
+}
+
 TEST(Broadphase, ShapeBoundsContainTheShape) {
   const Aabb b = shape_aabb(capsule_shape(0.1, 0.5), at({1, 0, 0}, rot(M_PI / 2, Vec3::UnitY())), 0.0);
   EXPECT_NEAR(b.hi.x(), 1.6, 1e-12);
