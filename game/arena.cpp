@@ -7,13 +7,65 @@
 
 namespace boxing {
 
+namespace {
+
+inline bool under(const Crate& c, double x, double y) {
+  return std::abs(x - c.center.x()) <= c.half_extents.x() && std::abs(y - c.center.y()) <= c.half_extents.y();
+}
+
+}  // namespace
+
 double Arena::top_at(double x, double y) const {
   double top = 0.0;
-  for (const Crate& c : crates) {
-    if (std::abs(x - c.center.x()) <= c.half_extents.x() && std::abs(y - c.center.y()) <= c.half_extents.y())
-      top = std::max(top, c.center.z() + c.half_extents.z());
+  if (index.indexed != crates.size() || crates.empty()) {
+    for (const Crate& c : crates)
+      if (under(c, x, y)) top = std::max(top, c.center.z() + c.half_extents.z());
+    return top;
+  }
+  const double fx = std::floor((x - index.origin.x()) / cell), fy = std::floor((y - index.origin.y()) / cell);
+  if (!(fx >= 0.0 && fy >= 0.0 && fx < index.nx && fy < index.ny)) return top;  // off the platform (or NaN)
+  const int cidx = static_cast<int>(fx) * index.ny + static_cast<int>(fy);
+  for (int k = index.first[cidx]; k < index.first[cidx + 1]; ++k) {
+    const Crate& c = crates[index.items[k]];
+    if (under(c, x, y)) top = std::max(top, c.center.z() + c.half_extents.z());
   }
   return top;
+}
+
+void index_crates(Arena& a) {
+  CrateIndex& ix = a.index;
+  ix = CrateIndex{};
+  if (a.crates.empty()) return;
+  Eigen::Vector2d lo = Eigen::Vector2d::Constant(1e300), hi = Eigen::Vector2d::Constant(-1e300);
+  for (const Crate& c : a.crates) {
+    lo = lo.cwiseMin((c.center - c.half_extents).head<2>());
+    hi = hi.cwiseMax((c.center + c.half_extents).head<2>());
+  }
+  // One cell of margin each way, and each crate listed in every cell its footprint (grown by a hair, for points on
+  // an edge) touches: a point's own cell lists every crate that can be under it.
+  ix.origin = lo - Eigen::Vector2d::Constant(a.cell);
+  ix.nx = static_cast<int>(std::ceil((hi.x() - ix.origin.x()) / a.cell)) + 1;
+  ix.ny = static_cast<int>(std::ceil((hi.y() - ix.origin.y()) / a.cell)) + 1;
+  const auto cell_of = [&](double v, double o, int n) {
+    return std::clamp(static_cast<int>(std::floor((v - o) / a.cell)), 0, n - 1);
+  };
+  std::vector<std::vector<int>> cells(static_cast<size_t>(ix.nx) * ix.ny);
+  constexpr double kHair = 1e-9;
+  for (int i = 0; i < static_cast<int>(a.crates.size()); ++i) {
+    const Crate& c = a.crates[i];
+    const int x0 = cell_of(c.center.x() - c.half_extents.x() - kHair, ix.origin.x(), ix.nx);
+    const int x1 = cell_of(c.center.x() + c.half_extents.x() + kHair, ix.origin.x(), ix.nx);
+    const int y0 = cell_of(c.center.y() - c.half_extents.y() - kHair, ix.origin.y(), ix.ny);
+    const int y1 = cell_of(c.center.y() + c.half_extents.y() + kHair, ix.origin.y(), ix.ny);
+    for (int cx = x0; cx <= x1; ++cx)
+      for (int cy = y0; cy <= y1; ++cy) cells[static_cast<size_t>(cx) * ix.ny + cy].push_back(i);
+  }
+  ix.first.assign(cells.size() + 1, 0);
+  for (size_t k = 0; k < cells.size(); ++k) {
+    ix.first[k + 1] = ix.first[k] + static_cast<int>(cells[k].size());
+    ix.items.insert(ix.items.end(), cells[k].begin(), cells[k].end());
+  }
+  ix.indexed = a.crates.size();
 }
 
 Stance stance_at(const Arena& a, const Eigen::Vector2d& position, double heading) {
@@ -84,6 +136,7 @@ Arena make_arena(uint64_t seed, double min_step, double separation, bool flat) {
       }
     }
   }
+  index_crates(a);
   for (Stance& s : a.stances) s = stance_at(a, s.position, s.heading);
   return a;
 }
@@ -159,6 +212,7 @@ Arena make_ring(uint64_t seed, double min_step, double separation) {
   r.corners[Ring::kBlue] = {half, half};
   r.corners[Ring::kNeutral0] = {-half, half};
   r.corners[Ring::kNeutral1] = {half, -half};
+  index_crates(a);
   for (Stance& s : a.stances) s = stance_at(a, s.position, s.heading);
   return a;
 }

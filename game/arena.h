@@ -45,14 +45,28 @@ struct Ring {
   }
 };
 
+// The crates bucketed by the grid cells their footprints cover (index_crates), so a height query reads the few
+// crates of one cell instead of all of them (the ring has 170; footholds and stances ask thousands of times a second).
+struct CrateIndex {
+  Eigen::Vector2d origin = Eigen::Vector2d::Zero();
+  int nx = 0, ny = 0;
+  size_t indexed = 0;        // the crate count it was built for (another count: top_at scans every crate)
+  std::vector<int> first;    // per cell (x-major), its run in `items`: [first[c], first[c + 1])
+  std::vector<int> items;    // crate indices
+};
+
 struct Arena {
   std::vector<Crate> crates;
   std::array<Stance, 2> stances;
   double cell = 0.5;  // crate footprint (m)
   Ring ring;          // the match's (present only from make_ring)
+  CrateIndex index;   // index_crates; rebuilt after the crates change
   // Height of the crate top under the world point (x, y); 0 (the floor) outside the platform.
   double top_at(double x, double y) const;
 };
+
+// Builds a.index over a.crates (make_arena and make_ring call it; call it again after changing the crates).
+void index_crates(Arena& a);
 
 // A top lower than this is the floor around the platform (Arena::top_at reads 0 there; every crate's top is 0.14 m
 // or more: 0.20-0.44, less up to 6 cm where make_arena sets the feet's step).

@@ -75,13 +75,28 @@ Vector3d pos_tangent(const Clip& c, int k) {
   return (nb.hn * sp + nb.hp * sn) / (nb.hp + nb.hn);
 }
 
-void pose_into(const Clip& c, double t, Pose& out) {
-  const int nb = c.keys.empty() ? 0 : static_cast<int>(c.keys[0].rotation.size());
+// The rotation spline of bone b over segment i (Kim, Kim & Shin 1995's cumulative cubic form): q(u) = q0 exp(r1 b1(u))
+// exp(r2 b2(u)) exp(r3 b3(u)), with r1, r3 the keys' tangents over a third of the segment and r2 the rotation between
+// the two inner control points.
+void spline_controls(const Clip& c, int i, int b, Vector3d r[3]) {
+  const double h = c.key_times[i + 1] - c.key_times[i];
+  const Quaterniond& q0 = c.keys[i].rotation[b];
+  Quaterniond q3 = c.keys[i + 1].rotation[b];
+  if (q0.dot(q3) < 0) q3.coeffs() = -q3.coeffs();
+  r[0] = rot_tangent(c, b, i) * (h / 3.0);
+  r[2] = rot_tangent(c, b, i + 1) * (h / 3.0);
+  const Quaterniond q1 = q0 * quat_exp(r[0]);
+  const Quaterniond q2 = q3 * quat_exp(-r[2]);
+  r[1] = quat_log(q1.conjugate() * q2);
+}
+
+void pose_into(const Clip& c, double t, Pose& out, bool root_only = false) {
+  const int nb = c.keys.empty() || root_only ? 0 : static_cast<int>(c.keys[0].rotation.size());
   out.root_position.setZero();
   out.rotation.assign(nb, Quaterniond::Identity());  // reuses the capacity: no allocation once warm
   if (c.keys.empty()) return;
   if (c.keys.size() == 1) {
-    out.rotation = c.keys[0].rotation;
+    if (!root_only) out.rotation = c.keys[0].rotation;
     out.root_position = c.keys[0].root_position;
     return;
   }
@@ -99,16 +114,14 @@ void pose_into(const Clip& c, double t, Pose& out) {
                         (u3 - u2) * m1;
   }
   const double b1 = 1.0 - (1.0 - u) * (1.0 - u) * (1.0 - u), b2 = 3 * u2 - 2 * u3, b3 = u3;
+  const bool baked = c.spline.size() == static_cast<size_t>(3 * (c.keys.size() - 1) * nb);
   for (int b = 0; b < nb; ++b) {
-    const Quaterniond& q0 = c.keys[i].rotation[b];
-    Quaterniond q3 = c.keys[i + 1].rotation[b];
-    if (q0.dot(q3) < 0) q3.coeffs() = -q3.coeffs();
-    const Vector3d r1 = rot_tangent(c, b, i) * (h / 3.0);
-    const Vector3d r3 = rot_tangent(c, b, i + 1) * (h / 3.0);
-    const Quaterniond q1 = q0 * quat_exp(r1);
-    const Quaterniond q2 = q3 * quat_exp(-r3);
-    const Vector3d r2 = quat_log(q1.conjugate() * q2);
-    out.rotation[b] = (q0 * quat_exp(r1 * b1) * quat_exp(r2 * b2) * quat_exp(r3 * b3)).normalized();
+    Vector3d r[3];
+    if (baked)
+      for (int k = 0; k < 3; ++k) r[k] = c.spline[3 * (static_cast<size_t>(i) * nb + b) + k];
+    else
+      spline_controls(c, i, b, r);
+    out.rotation[b] = (c.keys[i].rotation[b] * quat_exp(r[0] * b1) * quat_exp(r[1] * b2) * quat_exp(r[2] * b3)).normalized();
   }
 }
 
@@ -126,9 +139,20 @@ Pose sample_clip_pose(const Clip& c, double t) {
 
 void sample_clip_pose(const Clip& c, double t, Pose* out) { pose_into(c, t, *out); }
 
+void sample_clip_root(const Clip& c, double t, Pose* out) { pose_into(c, t, *out, true); }
+
 Eigen::Vector3d angular_velocity_between(const Eigen::Quaterniond& qa, const Eigen::Quaterniond& qb,
                                          double dt) {
   return quat_log(qb * qa.conjugate()) / dt;
+}
+
+void bake_spline(Clip& c) {
+  c.spline.clear();
+  if (c.keys.size() < 2) return;
+  const int nb = static_cast<int>(c.keys[0].rotation.size());
+  c.spline.resize(3 * (c.keys.size() - 1) * nb);
+  for (int i = 0; i + 1 < static_cast<int>(c.keys.size()); ++i)
+    for (int b = 0; b < nb; ++b) spline_controls(c, i, b, &c.spline[3 * (static_cast<size_t>(i) * nb + b)]);
 }
 
 PoseSample sample_clip(const Clip& c, double t) {

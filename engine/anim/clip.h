@@ -40,10 +40,17 @@ struct Clip {
   std::vector<std::string> next;  // natural continuations: clips that may follow the clip's end (may be empty)
   std::vector<double> key_times;  // seconds, key_times[0] == 0, increasing
   std::vector<Pose> keys;         // one pose per key time
+  // Derived from the keys by bake_spline (empty: computed per sample): per segment i and bone b, the rotation
+  // spline's three control vectors r1, r2, r3 at [3 (i * bones + b) + k]. Editing keys after baking needs a rebake.
+  std::vector<Eigen::Vector3d> spline;
 
   double duration() const { return key_times.empty() ? 0.0 : key_times.back(); }
   bool has_tag(const std::string& tag) const;
 };
+
+// Fills c.spline from c.keys: the per-segment constants of the rotation spline, so that a sample evaluates three
+// exponentials per bone instead of also five logarithms and two exponentials (the same numbers, stored).
+void bake_spline(Clip& c);
 
 // Pose only (no derivatives). t is wrapped for looping clips, clamped otherwise.
 Pose sample_clip_pose(const Clip& c, double t);
@@ -52,6 +59,8 @@ PoseSample sample_clip(const Clip& c, double t);
 // The same into *out, reusing its storage: no allocation once *out has held a pose of this skeleton (per tick).
 void sample_clip_pose(const Clip& c, double t, Pose* out);
 void sample_clip(const Clip& c, double t, PoseSample* out);
+// The root position alone (out->rotation left empty): the same number sample_clip_pose gives, without the bones.
+void sample_clip_root(const Clip& c, double t, Pose* out);
 
 // Angular velocity (parent/world frame) that takes qa to qb in dt: Log(qb qa^-1) / dt.
 Eigen::Vector3d angular_velocity_between(const Eigen::Quaterniond& qa, const Eigen::Quaterniond& qb,

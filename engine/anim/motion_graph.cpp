@@ -321,6 +321,7 @@ void keep_largest_component(MotionGraph& g) {
 void MotionGraph::build(const std::vector<Clip>& cl, const GraphOptions& opt, const MotionGraphOptions& co,
                         const Skeleton& sk) {
   clips = cl;
+  for (Clip& c : clips) bake_spline(c);
   options = opt;
   content = co;
   skeleton = sk;
@@ -527,7 +528,7 @@ void GraphWalker::tick(double dt, PoseSample* out) {
 
 void GraphWalker::hold_heading(double dt) {
   const double turn_by = -(1.0 - std::exp(-dt * heading_hold)) * std::remainder(T_.theta, 2.0 * M_PI);
-  world_pose_at(0.0, fd_a_);
+  world_pose_at(0.0, fd_a_, true);  // the root's floor position is all it needs
   // A rotation by turn_by about the root's floor position c: x -> R x + (c - R c), composed before every frame the
   // walk samples through (the clip's, the one it blends from, the one it left).
   Align2D turn;
@@ -552,21 +553,22 @@ const Pose& GraphWalker::preview(double ahead) const {
   return preview_;
 }
 
-void GraphWalker::world_pose_at(double off, Pose& out) const {
+void GraphWalker::world_pose_at(double off, Pose& out, bool root_only) const {
+  const auto sample = root_only ? sample_clip_root : static_cast<void (*)(const Clip&, double, Pose*)>(sample_clip_pose);
   const Clip& c = g_->clips[clip_];
   // within the current clip, time is clamped to the clip (the walk continues in the next clip);
   // just after a continuation, negative offsets look back into the clip that was left
   if (time_ + off < 0.0 && prev_clip_ >= 0) {
     const Clip& pc = g_->clips[prev_clip_];
-    sample_clip_pose(pc, std::max(0.0, pc.duration() + time_ + off), &out);
+    sample(pc, std::max(0.0, pc.duration() + time_ + off), &out);
     to_world_in_place(out, prev_T_);
   } else {
-    sample_clip_pose(c, c.loop ? time_ + off : std::clamp(time_ + off, 0.0, c.duration()), &out);
+    sample(c, c.loop ? time_ + off : std::clamp(time_ + off, 0.0, c.duration()), &out);
     to_world_in_place(out, T_);
   }
   if (!blend_.active) return;
   const Clip& ca = g_->clips[blend_.clip];
-  sample_clip_pose(ca, ca.loop ? blend_.time + off : std::clamp(blend_.time + off, 0.0, ca.duration()), &blend_from_);
+  sample(ca, ca.loop ? blend_.time + off : std::clamp(blend_.time + off, 0.0, ca.duration()), &blend_from_);
   to_world_in_place(blend_from_, blend_.T);
   const double w = ease((blend_.elapsed + off) / blend_.duration);
   blend_pose_into(blend_from_, out, w, out);

@@ -203,7 +203,8 @@ class GraphWalker {
   void take_continuation(int v);
   void take_random_transition(int v);
   bool plan_to(const std::vector<char>& target);
-  void world_pose_at(double dt_offset, Pose& out) const;
+  // root_only: out.root_position alone (out.rotation left empty), the same number as the whole pose's.
+  void world_pose_at(double dt_offset, Pose& out, bool root_only = false) const;
   void hold_heading(double dt);  // heading_hold's turn of the walk's frames, before the tick samples them
 
   const MotionGraph* g_;

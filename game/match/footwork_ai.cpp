@@ -92,6 +92,19 @@ FootworkMove circle_move(World& w, int k, double heading) {
   return stays_inside(w, k, m, heading) ? m : FootworkMove::Pivot;
 }
 
+// Away from p (the downed boxer, rising toward me): the move that leaves the stance's centre farthest from it, kept
+// inside the ring's margin where it can be.
+FootworkMove away_from(const World& w, int k, double heading, const Eigen::Vector2d& p) {
+  FootworkMove best = FootworkMove::None;
+  double far = -1e9;
+  for (FootworkMove m : {FootworkMove::Back, FootworkMove::Left, FootworkMove::Right}) {
+    const Eigen::Vector2d to = after_move(w, k, m, heading);
+    const double score = (to - p).norm() - 4.0 * past_margin(w, to);
+    if (score > far) far = score, best = m;
+  }
+  return best;
+}
+
 }  // namespace
 
 bool footwork_restless(const World& w, int k) {
@@ -123,7 +136,9 @@ bool footwork_ai_tick(World& w, int k, bool free, bool just_punched) {
     // To the neutral corner, facing the downed boxer (backing off or sidling there), then waiting there.
     const Eigen::Vector2d to = f.go_to - me;
     turn = wrap(std::atan2(other.y() - me.y(), other.x() - me.x()) - heading);
-    if (to.norm() < t.at_corner) {
+    if ((other - me).norm() < t.count_keep_away) {
+      m = away_from(w, k, heading + turn, other);
+    } else if (to.norm() < t.at_corner) {
       m = std::abs(turn) > t.face_within ? FootworkMove::Pivot : FootworkMove::None;
     } else {
       const Eigen::Rotation2Dd R(-(heading + turn));

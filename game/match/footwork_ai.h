@@ -26,6 +26,9 @@ struct FootworkAiTuning {
   double off_ropes = 0.15;    // m: pushed this far past it, the next move is the one back in (before any other)
   double corner_inset = 0.6;  // m, a neutral corner's spot inside the ropes' corner (each way)
   double at_corner = 0.35;    // m: there
+  // m, pelvis to pelvis: while the other is down, closer than this (a get-up carries the pelvis up to about a metre
+  // toward him) the standing boxer steps away from him first, corner or not (the count's 2 m, with room for a step)
+  double count_keep_away = 2.6;
   double max_still = 1.5;     // s without a move, then one (a circle where nothing else is called for)
 };
 

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 #include "game/arena.h"
 
@@ -66,4 +67,30 @@ TEST(Arena, RingIsFiveMetresInsideWithWalkableStepsAndMarksApart) {
     EXPECT_NEAR((r.corners[Ring::kRed] + r.corners[Ring::kBlue]).norm(), 0.0, 1e-12);  // opposite corners
   }
   EXPECT_FALSE(make_arena(1).ring.present);
+}
+
+TEST(Arena, TheCrateIndexGivesTheSameTopsAsScanningEveryCrate) {
+  // Random points over the platform and past it, and points on the crates' edges and corners: the indexed query
+  // against a copy whose index is dropped (top_at then scans every crate).
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(-3.6, 3.6);
+  for (const Arena& a : {make_ring(4, 0.10, 2.8), make_arena(4)}) {
+    Arena scan = a;
+    scan.index = CrateIndex{};
+    ASSERT_EQ(a.index.indexed, a.crates.size());
+    int on_crates = 0;
+    for (int i = 0; i < 4000; ++i) {
+      const double x = u(rng), y = u(rng);
+      EXPECT_EQ(a.top_at(x, y), scan.top_at(x, y)) << x << ", " << y;
+      on_crates += a.top_at(x, y) > 0.0;
+    }
+    for (const Crate& c : a.crates)
+      for (int sx : {-1, 1})
+        for (int sy : {-1, 1}) {
+          const double x = c.center.x() + sx * c.half_extents.x(), y = c.center.y() + sy * c.half_extents.y();
+          EXPECT_EQ(a.top_at(x, y), scan.top_at(x, y)) << x << ", " << y;
+        }
+    EXPECT_GT(on_crates, 400);  // the points do fall on crates (and off them)
+    EXPECT_LT(on_crates, 3900);
+  }
 }

@@ -73,6 +73,33 @@ void chol_solve(const QpVecK& q, const std::vector<int>& P, int np, const QpMatK
   }
 }
 
+// H = L L^T in place (the lower triangle of A becomes L), unblocked, column by column (Golub & Van Loan alg. 4.2.1,
+// the gaxpy form). At the balance QP's sizes (37 DoFs) Eigen's LLT takes its blocked path, whose packing costs more
+// than the arithmetic. A non-positive pivot (not expected: H has the ridge) is clamped, as in chol_append.
+void dense_cholesky(QpMatNN& A) {
+  const int n = static_cast<int>(A.rows());
+  for (int j = 0; j < n; ++j) {
+    if (j > 0) A.col(j).tail(n - j).noalias() -= A.block(j, 0, n - j, j) * A.row(j).head(j).transpose();
+    const double d = std::sqrt(std::max(A(j, j), 1e-300));
+    A(j, j) = d;
+    A.col(j).tail(n - j - 1) /= d;
+  }
+}
+
+// x = (L L^T)^-1 x for each column of X: forward substitution down L's columns, back substitution along them.
+template <typename Cols>
+void cholesky_solve_in_place(const QpMatNN& L, Cols&& X) {
+  const int n = static_cast<int>(L.rows());
+  for (int c = 0; c < X.cols(); ++c) {
+    auto x = X.col(c);
+    for (int j = 0; j < n; ++j) {
+      x[j] /= L(j, j);
+      x.tail(n - j - 1) -= x[j] * L.col(j).tail(n - j - 1);
+    }
+    for (int j = n - 1; j >= 0; --j) x[j] = (x[j] - L.col(j).tail(n - j - 1).dot(x.tail(n - j - 1))) / L(j, j);
+  }
+}
+
 // Lawson & Hanson's active-set NNLS ("Solving Least Squares Problems", 1974, ch. 23) in normal-equation form:
 // min 1/2 x^T Q x - q^T x subject to x >= 0, Q symmetric positive definite. Exact in a finite number of steps
 // (projected Gauss-Seidel needs thousands of sweeps here: Q = A^T A has rank 6 plus a tiny ridge). The passive
@@ -204,7 +231,12 @@ void balance_qp_solve(const physics::Model& m, const physics::Data& d, const Bal
     for (int a = 0; a < s; ++a) {
       const Vec3 ja = ws.J.block<3, 1>(row0, a);
       ws.g[cols[a]] += w * ja.dot(target);
-      for (int c = 0; c < s; ++c) H(cols[a], cols[c]) += w * ja.dot(ws.J.block<3, 1>(row0, c));
+      H(cols[a], cols[a]) += w * ja.dot(ja);
+      for (int c = a + 1; c < s; ++c) {  // J^T J is symmetric: each off-diagonal product once
+        const double h = w * ja.dot(ws.J.block<3, 1>(row0, c));
+        H(cols[a], cols[c]) += h;
+        H(cols[c], cols[a]) += h;
+      }
     }
   };
   for (const QpAngularTask& t : in.angular) {
@@ -318,14 +350,15 @@ void balance_qp_solve(const physics::Model& m, const physics::Data& d, const Bal
   // Cholesky factors (n and 6) instead of an LU of the (n + 6) KKT matrix with K + 1 right-hand sides.
   ws.E = M.topRows(6);
   for (int k = 0; k < 6; ++k) ws.E(k, k) += m.bodies[m.dof_body[b0 + k]].armature;
-  ws.llt_H.compute(H);
+  ws.L_H = H;
+  dense_cholesky(ws.L_H);
   ws.Y = ws.E.transpose();
-  ws.llt_H.solveInPlace(ws.Y);
-  ws.S.noalias() = ws.E * ws.Y;
+  cholesky_solve_in_place(ws.L_H, ws.Y);
+  ws.S.noalias() = ws.E.lazyProduct(ws.Y);
   ws.llt_S.compute(ws.S);
   ws.sol.resize(n, K + 1);
   ws.sol.col(0) = ws.g;
-  ws.llt_H.solveInPlace(ws.sol.col(0));
+  cholesky_solve_in_place(ws.L_H, ws.sol.leftCols(1));
   ws.lambda.noalias() = ws.E * ws.sol.col(0);
   ws.lambda += c_root;
   ws.llt_S.solveInPlace(ws.lambda);
@@ -333,7 +366,7 @@ void balance_qp_solve(const physics::Model& m, const physics::Data& d, const Bal
   if (K > 0) {
     ws.SF = ws.G.topRows(6);
     ws.llt_S.solveInPlace(ws.SF);
-    ws.sol.rightCols(K).noalias() = ws.Y * ws.SF;
+    ws.sol.rightCols(K).noalias() = ws.Y.lazyProduct(ws.SF);  // 6 deep: coefficient-wise beats the blocked kernel
   }
   const auto q0 = ws.sol.col(0).head(n);
   const auto Q1 = ws.sol.topRightCorner(n, K);
@@ -347,10 +380,8 @@ void balance_qp_solve(const physics::Model& m, const physics::Data& d, const Bal
   if (K > 0) {
     // Q1 = Y S^-1 F has rank 6, and H Y = E^T, so Q1^T H Q1 = SF^T E Y SF = SF^T F (S SF = F): a 6-deep product
     // instead of two n-deep ones, and Q1^T w = SF^T (Y^T w).
-    ws.Q.noalias() = ws.SF.transpose() * ws.G.topRows(6);
-    ws.Q.noalias() += ws.A.transpose() * ws.A;
-    for (int i = 0; i < K; ++i)  // symmetrise in place (round-off)
-      for (int j = i + 1; j < K; ++j) ws.Q(i, j) = ws.Q(j, i) = 0.5 * (ws.Q(i, j) + ws.Q(j, i));
+    ws.Q.noalias() = ws.SF.transpose().lazyProduct(ws.G.topRows(6));
+    ws.Q.noalias() += ws.A.transpose().lazyProduct(ws.A);
     ws.w.noalias() = H * q0;
     ws.w -= ws.g;
     ws.q.noalias() = ws.A.transpose() * ws.b;
@@ -363,7 +394,7 @@ void balance_qp_solve(const physics::Model& m, const physics::Data& d, const Bal
     if (p.w_torque > 0.0 && n > 6) {
       const int nj = n - 6;
       ws.HQ1.noalias() = M.bottomRows(nj) * ws.Y;  // (M Q1)_joints = (M_joints Y) S^-1 F, 6 deep again
-      ws.T1.noalias() = ws.HQ1 * ws.SF;
+      ws.T1.noalias() = ws.HQ1.lazyProduct(ws.SF);
       ws.T1 -= ws.G.bottomRows(nj);
       ws.t0.noalias() = M.bottomRows(nj) * q0;
       for (int k = 0; k < nj; ++k) {
@@ -372,9 +403,14 @@ void balance_qp_solve(const physics::Model& m, const physics::Data& d, const Bal
         ws.T1.row(k) += body.armature * Q1.row(6 + k);
         ws.t0[k] += body.armature * q0[6 + k] + c_full[dof] + body.damping * d.v[dof];
       }
-      ws.Q.noalias() += p.w_torque * ws.T1.transpose() * ws.T1;
+      // w T1^T T1 into the lower triangle only (a symmetric rank-nj update: half a general product's work)
+      ws.QT.setZero(K, K);
+      ws.QT.selfadjointView<Eigen::Lower>().rankUpdate(ws.T1.transpose(), p.w_torque);
+      ws.Q.triangularView<Eigen::Lower>() += ws.QT;
       ws.q.noalias() -= p.w_torque * ws.T1.transpose() * ws.t0;
     }
+    // Q from its lower triangle (symmetric: the products above agree with their transposes up to round-off)
+    ws.Q.triangularView<Eigen::StrictlyUpper>() = ws.Q.transpose();
     const double reg = (nc > 0 ? p.reg_beta * ws.Q.diagonal().head(4 * nc).mean() : 0.0) + 1e-12;
     ws.Q.diagonal().array() += reg;
     ws.Q.diagonal().tail(na).array() += p.w_root_assist;
