@@ -28,7 +28,7 @@ struct FootworkAiTuning {
   double at_corner = 0.35;    // m: there
   // m, pelvis to pelvis: while the other is down, closer than this (a get-up carries the pelvis up to about a metre
   // toward him) the standing boxer steps away from him first, corner or not (the count's 2 m, with room for a step)
-  double count_keep_away = 2.6;
+  double count_keep_away = 3.2;
   double max_still = 1.5;     // s without a move, then one (a circle where nothing else is called for)
 };
 

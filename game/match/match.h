@@ -104,7 +104,7 @@ struct MatchTuning {
   double min_down_time = 1.2;        // s down before the stand-up at the earliest
   double getup_consciousness = 0.6;  // consciousness set at the stand-up's start (the servo's gains with it)
   double count_seconds = 10.0;       // the referee's count: not up in time = knock-out
-  double count_when_away = 2.5;      // m, pelvis to pelvis: the standing boxer this far away, the count starts ...
+  double count_when_away = 2.0;      // m, pelvis to pelvis: the standing boxer this far away, the count starts ...
   double count_start_wait = 8.0;     // s after the knockdown at the latest (the referee waits only so long)
   double up_height = 0.8;            // share of the standing pelvis height that counts as up (with guard playing)
   double settle_time = 0.5;          // s up and still before the fight goes on

@@ -199,7 +199,7 @@ void referee(World& w) {
     if (s.state == BoxerState::Down) while_down(w, k, g, speed);
     else if (s.state == BoxerState::GettingUp) while_getting_up(w, k, g, speed);
     // The count: not up in count_seconds is a knock-out.
-    if (g.count_from < 0.0) {
+    if (g.count_from < 0.0 && s.state != BoxerState::Falling) {  // on the canvas (a fall carries the pelvis along)
       const double apart = (w.data.x[pelvis].p - w.data.x[w.boxers[1 - k].bodies.body[0]].p).head<2>().norm();
       if (apart >= tu.count_when_away || t - g.down_at >= tu.count_start_wait) g.count_from = t;
     }
