@@ -74,7 +74,11 @@ void add_leg_clearance(QpBalance& q, const eng::physics::Model& m, const eng::ph
   const double weight = tq.leg_clearance_weight, gap = tq.leg_clearance, omega = tq.leg_clearance_omega;
   if (q.leg_geoms[0].empty()) list_leg_geoms(b, q.leg_geoms);
   if (weight <= 0.0) return;
-  if (!tq.leg_clearance_in_step && b.ctl.balance_steps.step.active && !b.ctl.balance_steps.step.returning) return;
+  // A capture step's swing may cross the stance leg: no clearance then. A footwork move's steps never cross (the foot
+  // on the move's side goes first), so they keep it.
+  if (!tq.leg_clearance_in_step && b.ctl.balance_steps.step.active && !b.ctl.balance_steps.step.returning &&
+      !footwork_busy(b))
+    return;
   const int thigh[2] = {b.bodies.body[b.bones.leg[0].thigh], b.bodies.body[b.bones.leg[1].thigh]};
   eng::physics::ContactPoint c[eng::physics::kMaxContactsPerPair];
   for (int ga : q.leg_geoms[0])

@@ -16,6 +16,7 @@ namespace {
 
 // The deepest overlap between the two legs' geoms (m, > 0 overlapping).
 double legs_overlap(const World& w, const FootworkMetrics& m) {
+  if (m.leg_geoms[0].empty()) return -1e9;
   double deepest = -1e9;
   for (int ga : m.leg_geoms[0]) {
     const SweptSegment a = swept_segment(w.model.geoms[ga].shape, w.data.geom_x[ga]);
@@ -54,6 +55,8 @@ void measure_feet(World& w, int k, bool standing) {
 
 }  // namespace
 
+double legs_overlap(const World& w, int k) { return legs_overlap(w, w.match->footwork[k]); }
+
 void footwork_setup(World& w) {
   for (int k = 0; k < 2 && k < static_cast<int>(w.boxers.size()); ++k) {
     FootworkMetrics& m = w.match->footwork[k];
@@ -87,7 +90,7 @@ void measure_footwork(World& w) {
     if (standing) {
       m.standing_s += dt;
       if (in_range(w, k)) m.time_in_range_s += dt;
-      if (!m.leg_geoms[0].empty() && legs_overlap(w, m) > tu.legs_through) m.legs_through_s += dt;
+      if (legs_overlap(w, m) > tu.legs_through) m.legs_through_s += dt;
     }
     if (w.steps % every == 0) {
       const Eigen::Vector2d p = w.data.x[b.bodies.body[0]].p.head<2>();

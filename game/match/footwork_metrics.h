@@ -50,5 +50,7 @@ struct FootworkMetrics {
 void footwork_setup(World& w);
 // Each tick after the referee: the metrics above, and each get-up's count_distance_min.
 void measure_footwork(World& w);
+// The deepest overlap between boxer k's two legs now (m, > 0: through each other; very negative before setup).
+double legs_overlap(const World& w, int k);
 
 }  // namespace boxing

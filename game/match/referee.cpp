@@ -7,6 +7,7 @@
 #include "game/character_builder.h"
 #include "game/match/fighter_view.h"
 #include "game/match/footwork_ai.h"
+#include "game/match/footwork_metrics.h"
 #include "game/match/match.h"
 #include "game/match/match_internal.h"
 
@@ -38,16 +39,22 @@ GetUp down_at(int boxer, double t) {
 // rising where it fell, into a standing opponent, it stuck crouched against him and was counted out
 // (docs/decisions/match-fight.md). Nobody punches a downed boxer, so no hit is lost. Its thighs pass through each
 // other too (getup_thighs_pass). World::model's masks and self-collision flags are read by every step's collision.
+// Boxer k's legs pass through each other (on) or collide again (match_setup's leg pairs).
+void legs_pass(World& w, int k, bool on) {
+  const Boxer& b = w.boxers[k];
+  if (w.match->tuning.getup_thighs_pass)
+    set_self_colliding(w.model, b.bodies, {b.bones.leg[0].thigh, b.bones.leg[1].thigh, b.bones.leg[0].shank,
+                                           b.bones.leg[1].shank, b.bones.leg[0].foot, b.bones.leg[1].foot},
+                       !on);
+}
+
 void pass_through_opponent(World& w, int k, bool on) {
   const Boxer& b = w.boxers[k];
   const uint32_t other_group = 2u << w.boxers[1 - k].index;  // add_boxer's group
   for (size_t i = 0; i < b.bodies.first_geom.size(); ++i)
     for (int g = b.bodies.first_geom[i]; g < b.bodies.first_geom[i] + b.bodies.geom_count[i]; ++g)
       w.model.geoms[g].mask = on ? ~other_group : 0xffffffffu;
-  if (w.match->tuning.getup_thighs_pass)
-    set_self_colliding(w.model, b.bodies, {b.bones.leg[0].thigh, b.bones.leg[1].thigh, b.bones.leg[0].shank,
-                                           b.bones.leg[1].shank, b.bones.leg[0].foot, b.bones.leg[1].foot},
-                       !on);  // match_setup's leg pairs
+  legs_pass(w, k, on);
 }
 
 // The get-up starts where the body lies: the stance re-based under it, so the stand-up clip is placed at the pelvis
@@ -134,10 +141,14 @@ void while_getting_up(World& w, int k, GetUp& g, double speed) {
   g.assist_force_sq_dt += b.ctl.root_force.squaredNorm() * dt;
   g.assist_time += dt;
   const Clip* cl = clip_of(w, b);
-  // Up: guard playing, the pelvis at standing height, both feet on the ground and the body settled (the QP takes
-  // a boxer over only once it stands).
-  const bool up = cl && cl->has_tag("guard") && pelvis_height(w, b) >= tu.up_height * s.standing_height &&
-                  b.ctl.contacts.support[0] && b.ctl.contacts.support[1] && speed < tu.still_speed;
+  // Up: guard playing, the pelvis at standing height, both feet on the ground, the body settled (the QP takes a
+  // boxer over only once it stands), and the legs out of each other. They pass through each other while it rises
+  // (pass_through_opponent); risen with them crossed, they collide again and push apart before the fight goes on.
+  const bool risen = cl && cl->has_tag("guard") && pelvis_height(w, b) >= tu.up_height * s.standing_height &&
+                     b.ctl.contacts.support[0] && b.ctl.contacts.support[1] && speed < tu.still_speed;
+  const bool legs_apart = legs_overlap(w, k) <= mt.footwork_tuning.legs_through;
+  if (risen && !legs_apart) legs_pass(w, k, false);
+  const bool up = risen && legs_apart;
   f.settled = up ? f.settled + dt : 0.0;
   if (f.settled <= 0.0 && t - s.since > tu.stand_up_give_up) {
     // Given up: down again, limp; lying still, while_down starts the stand-up anew (the same GetUp: its assist time

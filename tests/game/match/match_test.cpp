@@ -14,6 +14,7 @@
 #include "game/interaction/interaction.h"
 #include "game/match/body_parts.h"
 #include "game/match/fighter_ai.h"
+#include "game/match/footwork_metrics.h"
 #include "game/match/punch_aim.h"
 #include "game/seed_rate.h"
 #include "game/match/match.h"
@@ -235,13 +236,17 @@ TEST(Match, AGetUpsLegCannotCatchOnTheOtherThigh) {
           const Match& m = *world.match;
           bool mixed = false;
           why.check(thighs_self_collide(world, 0, &mixed), "thighs not self-colliding while down, before the get-up");
-          int getting_up = 0, colliding_then = 0, mixed_ticks = 0;
+          int getting_up = 0, colliding_then = 0, mixed_ticks = 0, passing_after = 0;
+          double overlap_at_switch = 1.0;  // the legs' overlap when they started colliding again (m)
           // The count's length: up or counted out by then.
           for (int i = 0; i < int(m.tuning.count_seconds * 240) && m.getups[0].up_at < 0.0 && !m.over; ++i) {
             step_world(world);
             if (world.boxers[0].ctl.state.state != BoxerState::GettingUp) continue;
             ++getting_up;
-            colliding_then += thighs_self_collide(world, 0, &mixed);
+            const bool colliding = thighs_self_collide(world, 0, &mixed);
+            if (colliding && colliding_then == 0) overlap_at_switch = legs_overlap(world, 0);
+            if (!colliding && colliding_then > 0) ++passing_after;
+            colliding_then += colliding;
             mixed_ticks += mixed;
           }
           const GetUp g = m.getups[0];
@@ -249,10 +254,16 @@ TEST(Match, AGetUpsLegCannotCatchOnTheOtherThigh) {
           if (pass) why.check(g.up_at >= 0.0, "not up within the count");
           why.check(mixed_ticks == 0, "one thigh's geoms colliding, the other's not, on " + std::to_string(mixed_ticks) +
                                           " ticks");
-          if (pass)
-            why.check(colliding_then == 0, "thighs self-colliding on " + std::to_string(colliding_then) + " of " +
-                                               std::to_string(getting_up) + " get-up ticks");
-          else
+          if (pass) {
+            // Passing through each other while it rises; risen with the legs crossed, they collide again (and stay
+            // so) to push apart before it is up: only at the end, and only with the legs through each other.
+            why.check(passing_after == 0, "the legs passing again on " + std::to_string(passing_after) +
+                                              " ticks after they collided");
+            why.check(colliding_then < getting_up, "thighs self-colliding on every get-up tick");
+            if (colliding_then > 0)
+              why.check(overlap_at_switch > m.footwork_tuning.legs_through,
+                        "the legs collided again while apart (" + std::to_string(overlap_at_switch) + " m)");
+          } else
             why.check(colliding_then == getting_up, "thighs passing on " + std::to_string(getting_up - colliding_then) +
                                                         " get-up ticks with getup_thighs_pass off");
           if (g.up_at >= 0.0) {
