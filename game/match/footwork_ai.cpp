@@ -93,7 +93,8 @@ FootworkMove circle_move(World& w, int k, double heading) {
 }
 
 // Away from p (the downed boxer, rising toward me): the move that leaves the stance's centre farthest from it, kept
-// inside the ring's margin where it can be.
+// inside the ring's margin where it can be (each metre past the margin counts as 4 m closer: in a corner it sidles
+// along the ropes rather than into them).
 FootworkMove away_from(const World& w, int k, double heading, const Eigen::Vector2d& p) {
   FootworkMove best = FootworkMove::None;
   double far = -1e9;

@@ -35,10 +35,6 @@ GetUp down_at(int boxer, double t) {
   return g;
 }
 
-// A boxer getting up passes through its opponent (its geoms' collision mask leaves the other boxer's group out):
-// rising where it fell, into a standing opponent, it stuck crouched against him and was counted out
-// (docs/decisions/match-fight.md). Nobody punches a downed boxer, so no hit is lost. Its thighs pass through each
-// other too (getup_thighs_pass). World::model's masks and self-collision flags are read by every step's collision.
 // Boxer k's legs pass through each other (on) or collide again (match_setup's leg pairs).
 void legs_pass(World& w, int k, bool on) {
   const Boxer& b = w.boxers[k];
@@ -48,6 +44,10 @@ void legs_pass(World& w, int k, bool on) {
                        !on);
 }
 
+// A boxer getting up passes through its opponent (its geoms' collision mask leaves the other boxer's group out):
+// rising where it fell, into a standing opponent, it stuck crouched against him and was counted out
+// (docs/decisions/match-fight.md). Nobody punches a downed boxer, so no hit is lost. Its thighs pass through each
+// other too (getup_thighs_pass). World::model's masks and self-collision flags are read by every step's collision.
 void pass_through_opponent(World& w, int k, bool on) {
   const Boxer& b = w.boxers[k];
   const uint32_t other_group = 2u << w.boxers[1 - k].index;  // add_boxer's group

@@ -55,6 +55,26 @@ TEST(ClipSpline, PassesThroughKeys) {
   }
 }
 
+TEST(ClipSpline, ABakedClipSamplesTheSamePosesBitForBitAndTheRootAloneMatches) {
+  // bake_spline stores the per-segment controls a sample would compute: the same numbers, so the same poses exactly;
+  // sample_clip_root gives the whole sample's root position and no bones.
+  for (bool loop : {false, true}) {
+    const Clip plain = synthetic(loop);
+    Clip baked = plain;
+    bake_spline(baked);
+    ASSERT_EQ(baked.spline.size(), 3 * (baked.keys.size() - 1) * 3);
+    Pose root;
+    for (double t = -0.3; t < 1.3; t += 0.0137) {
+      const Pose a = sample_clip_pose(plain, t), b = sample_clip_pose(baked, t);
+      EXPECT_EQ(a.root_position, b.root_position) << t;
+      for (int k = 0; k < 3; ++k) EXPECT_EQ(a.rotation[k].coeffs(), b.rotation[k].coeffs()) << t << " bone " << k;
+      sample_clip_root(baked, t, &root);
+      EXPECT_EQ(root.root_position, a.root_position) << t;
+      EXPECT_TRUE(root.rotation.empty());
+    }
+  }
+}
+
 TEST(ClipSpline, AngularVelocityContinuousAcrossKeys) {
   for (bool loop : {false, true}) {
     const Clip c = synthetic(loop);
