@@ -403,10 +403,8 @@ void balance_qp_solve(const physics::Model& m, const physics::Data& d, const Bal
         ws.T1.row(k) += body.armature * Q1.row(6 + k);
         ws.t0[k] += body.armature * q0[6 + k] + c_full[dof] + body.damping * d.v[dof];
       }
-      // w T1^T T1 into the lower triangle only (a symmetric rank-nj update: half a general product's work)
-      ws.QT.setZero(K, K);
-      ws.QT.selfadjointView<Eigen::Lower>().rankUpdate(ws.T1.transpose(), p.w_torque);
-      ws.Q.triangularView<Eigen::Lower>() += ws.QT;
+      // + w T1^T T1, into Q's lower triangle only (a symmetric rank-nj update: half a general product's work)
+      ws.Q.selfadjointView<Eigen::Lower>().rankUpdate(ws.T1.transpose(), p.w_torque);
       ws.q.noalias() -= p.w_torque * ws.T1.transpose() * ws.t0;
     }
     // Q from its lower triangle (symmetric: the products above agree with their transposes up to round-off)

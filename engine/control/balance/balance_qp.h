@@ -169,7 +169,6 @@ struct BalanceQp {
   QpMat6K SF;
   Eigen::Matrix<double, 6, 1> lambda;
   QpMatNN L_H;   // H's Cholesky factor (lower triangle; dense_cholesky)
-  QpMatKK QT;    // the joint torques' term of Q (lower triangle)
   Eigen::LLT<Eigen::Matrix<double, 6, 6>> llt_S;
   QpVecK beta, q, beta_fit, z, wk;  // wk: the NNLS gradient q - Q x
   QpVecN g, w, t0, tau_assist;
