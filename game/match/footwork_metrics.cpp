@@ -98,12 +98,15 @@ void measure_footwork(World& w) {
       m.last_sample = p;
       m.have_sample = standing;
     }
-    // A get-up's count: how close the other came to the downed one (pelvis to pelvis, floor plane).
+    // A knockdown: how close the other came to the downed one (pelvis to pelvis, floor plane), while the count ran
+    // and over the whole knockdown.
     const int g = mt.fighter[k].getup;
-    if (g >= 0 && g < static_cast<int>(mt.getups.size()) && mt.getups[g].count_from >= 0.0) {
+    if (g >= 0 && g < static_cast<int>(mt.getups.size())) {
+      GetUp& up = mt.getups[g];
       const double d = (w.data.x[b.bodies.body[0]].p - w.data.x[w.boxers[1 - k].bodies.body[0]].p).head<2>().norm();
-      double& closest = mt.getups[g].count_distance_min;
-      closest = closest < 0.0 ? d : std::min(closest, d);
+      auto closer = [d](double& closest) { closest = closest < 0.0 ? d : std::min(closest, d); };
+      closer(up.down_distance_min);
+      if (up.counting) closer(up.count_distance_min);
     }
   }
 }

@@ -104,8 +104,9 @@ struct MatchTuning {
   double min_down_time = 1.2;        // s down before the stand-up at the earliest
   double getup_consciousness = 0.6;  // consciousness set at the stand-up's start (the servo's gains with it)
   double count_seconds = 10.0;       // the referee's count: not up in time = knock-out
-  double count_when_away = 2.0;      // m, pelvis to pelvis: the standing boxer this far away, the count starts ...
-  double count_start_wait = 8.0;     // s after the knockdown at the latest (the referee waits only so long)
+  // m, pelvis to pelvis: the count runs only while the standing boxer is this far from the downed one (in a neutral
+  // corner); closer, the referee stops counting until he is back (referee.cpp, docs/decisions/count-distance.md).
+  double count_when_away = 2.0;
   double up_height = 0.8;            // share of the standing pelvis height that counts as up (with guard playing)
   double settle_time = 0.5;          // s up and still before the fight goes on
   double after_count = 0.75;         // consciousness at least this once up from a knockdown
@@ -155,12 +156,16 @@ struct GetUp {
   double assist_sq_dt = 0.0, assist_time = 0.0;  // root assist torque^2 dt over the stand-up
   double assist_force_sq_dt = 0.0;               // root assist force^2 dt
   int retries = 0;  // stand-ups given up and started again (MatchTuning::stand_up_give_up)
-  // m: the closest the other boxer came to the downed one (pelvis to pelvis, floor plane) from down_at to up_at
-  // (measure_footwork; -1 until measured).
+  // m: the closest the other boxer came to the downed one (pelvis to pelvis, floor plane) while the count ran, and
+  // from down_at to up_at whether it ran or not (measure_footwork; -1 until measured).
   double count_distance_min = -1.0;
-  // s: the count starts once the standing boxer is in a neutral corner (MatchTuning::count_when_away from the downed
-  // one), or count_start_wait after the knockdown at the latest, as a referee starts it (< 0: not yet).
+  double down_distance_min = -1.0;
+  // The count runs only while the standing boxer is MatchTuning::count_when_away from the downed one (in a neutral
+  // corner), as a referee counts: count_from is the first tick it ran (< 0: not yet), counted_ticks the ticks it has
+  // run since, paused_ticks those it was stopped for the standing boxer too close. counting: it ran this tick.
   double count_from = -1.0;
+  int counted_ticks = 0, paused_ticks = 0;
+  bool counting = false;
 };
 
 // What the player asks of a boxer (keys, game/app.cpp): a punch, a defence or a step; taken by the motion graph like

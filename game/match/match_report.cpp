@@ -27,8 +27,10 @@ MatchHud match_hud(const World& w) {
       // The count's number once it has started (the standing boxer in a neutral corner, referee.h).
       h.banner = std::string(k == 0 ? "RED" : "BLUE") + " DOWN";
       if (g.count_from >= 0.0) {
-        const int count = std::min(static_cast<int>(mt.tuning.count_seconds), static_cast<int>(t - g.count_from) + 1);
+        const int count = std::min(static_cast<int>(mt.tuning.count_seconds),
+                                   static_cast<int>(g.counted_ticks * kPhysicsDt) + 1);
         h.banner += "   " + std::to_string(count);
+        if (!g.counting) h.banner += "   (count stopped: to the neutral corner)";
       }
     }
   }
@@ -90,8 +92,12 @@ nlohmann::json match_report(const World& w) {
                       {"root_assist_force_rms_n", g.assist_time > 0 ? std::sqrt(g.assist_force_sq_dt / g.assist_time) : 0.0},
                       {"stand_up_s", g.assist_time},
                       {"stand_up_retries", g.retries},
+                      {"count_s", g.counted_ticks * kPhysicsDt},
+                      {"count_paused_s", g.paused_ticks * kPhysicsDt},
                       {"count_distance_min_m", g.count_distance_min >= 0.0 ? nlohmann::json(g.count_distance_min)
-                                                                          : nlohmann::json(nullptr)}});
+                                                                          : nlohmann::json(nullptr)},
+                      {"down_distance_min_m", g.down_distance_min >= 0.0 ? nlohmann::json(g.down_distance_min)
+                                                                        : nlohmann::json(nullptr)}});
   auto pair = [&mt](auto get) { return nlohmann::json::array({get(mt.fighter[0]), get(mt.fighter[1])}); };
   std::string result = mt.result;
   if (result.empty()) {

@@ -1,6 +1,7 @@
 #include "game/match/referee.h"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "game/boxer_stepping.h"
@@ -209,12 +210,23 @@ void referee(World& w) {
     const double speed = body_velocity_at(w, pelvis, w.data.x[pelvis].p).norm();
     if (s.state == BoxerState::Down) while_down(w, k, g, speed);
     else if (s.state == BoxerState::GettingUp) while_getting_up(w, k, g, speed);
-    // The count: not up in count_seconds is a knock-out.
-    if (g.count_from < 0.0 && s.state != BoxerState::Falling) {  // on the canvas (a fall carries the pelvis along)
+    if (f.getup < 0) continue;  // up this tick
+    // The count, once the downed boxer is on the canvas (a fall carries the pelvis along). It runs only while the
+    // standing boxer keeps count_when_away from the downed one; closer, the referee stops counting until he is back
+    // in his corner, as the professional rules have it (docs/decisions/count-distance.md). Not up in count_seconds
+    // of counting: a knock-out.
+    g.counting = false;
+    if (s.state != BoxerState::Falling && !mt.over) {
       const double apart = (w.data.x[pelvis].p - w.data.x[w.boxers[1 - k].bodies.body[0]].p).head<2>().norm();
-      if (apart >= tu.count_when_away || t - g.down_at >= tu.count_start_wait) g.count_from = t;
+      if (apart >= tu.count_when_away) {
+        g.counting = true;
+        if (g.count_from < 0.0) g.count_from = t;
+        else ++g.counted_ticks;
+      } else if (g.count_from >= 0.0) {
+        ++g.paused_ticks;
+      }
     }
-    if (f.getup >= 0 && !mt.over && g.count_from >= 0.0 && t - g.count_from > tu.count_seconds) {
+    if (!mt.over && g.counted_ticks > std::lround(tu.count_seconds / kPhysicsDt)) {
       mt.over = true;
       mt.result = "KO: boxer " + std::to_string(1 - k) + " wins (boxer " + std::to_string(k) + " not up at " +
                   std::to_string(static_cast<int>(tu.count_seconds)) + ")";

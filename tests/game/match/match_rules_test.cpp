@@ -96,7 +96,8 @@ void knock_out_at_ten(int k) {
   const std::string side = k == 0 ? "RED" : "BLUE";
   std::vector<std::string> banners;
   double over_at = -1.0;
-  const double most = mt.tuning.count_start_wait + mt.tuning.count_seconds + 1.0;
+  // The standing boxer walks to a neutral corner first (the count runs only from count_when_away): 20 s is ample.
+  const double most = 20.0 + mt.tuning.count_seconds;
   for (int i = 0; i < static_cast<int>(most * kTicksPerSecond) && over_at < 0; ++i) {
     const std::string b = match_hud(world).banner;
     if (banners.empty() || banners.back() != b) banners.push_back(b);
@@ -110,11 +111,12 @@ void knock_out_at_ten(int k) {
   for (int n = 1; n <= 10; ++n) count.push_back(side + " DOWN   " + std::to_string(n));
   EXPECT_EQ(banners, count);
   ASSERT_GE(over_at, 0.0) << "no knock-out " << mt.tuning.count_seconds + 1.0 << " s after the knockdown";
-  // The first tick past the count (kPhysicsDt = 1/240 s): not a tick earlier, not a tick later.
+  // The first tick past the count (kPhysicsDt = 1/240 s): not a tick earlier, not a tick later; every tick from the
+  // count's start either counted or stopped (the standing boxer too close).
   ASSERT_GE(g.count_from, g.down_at);
-  EXPECT_LE(g.count_from, g.down_at + mt.tuning.count_start_wait + 1e-9);
-  EXPECT_GT(over_at - g.count_from, mt.tuning.count_seconds);
-  EXPECT_LE(over_at - g.count_from, mt.tuning.count_seconds + 1.0 / kTicksPerSecond + 1e-9);
+  EXPECT_EQ(g.counted_ticks, static_cast<int>(mt.tuning.count_seconds) * kTicksPerSecond + 1);
+  EXPECT_NEAR(over_at - g.count_from, static_cast<double>(g.counted_ticks + g.paused_ticks) / kTicksPerSecond, 1e-9);
+  EXPECT_GE(g.count_distance_min, mt.tuning.count_when_away);
   const std::string ko = "KO: boxer " + std::to_string(1 - k) + " wins (boxer " + std::to_string(k) + " not up at 10)";
   EXPECT_EQ(mt.result, ko);
   EXPECT_EQ(match_hud(world).banner, ko);
@@ -127,8 +129,8 @@ TEST(MatchRules, ADownedRedBoxerNotUpAtTheCountOfTenLosesByKnockOut) { knock_out
 TEST(MatchRules, ADownedBlueBoxerNotUpAtTheCountOfTenLosesByKnockOut) { knock_out_at_ten(1); }
 
 // Red put down toward blue: blue is sent to the neutral corner farthest from red (footwork_ai.h neutral_corner) and
-// walks there (nobody is set anywhere: teleports stay 0); the count starts once blue is count_when_away from red or
-// count_start_wait after the knockdown. Bound: blue 0.5 m farther from red before red is up or 6 s have passed
+// walks there (nobody is set anywhere: teleports stay 0); the count starts once blue is count_when_away from red.
+// Bound: blue 0.5 m farther from red before red is up or 6 s have passed
 // (measured 0.76 m: the walk's moves carry 0.25-0.3 m per 1-1.5 s, the first spent turning to face red).
 TEST(MatchRules, AStandingOpponentWalksToANeutralCornerWhileTheOtherIsDown) {
   auto w = idle_match();
@@ -157,6 +159,40 @@ TEST(MatchRules, AStandingOpponentWalksToANeutralCornerWhileTheOtherIsDown) {
   ASSERT_FALSE(mt.getups.empty());
   const GetUp& g = mt.getups.front();
   if (g.count_from >= 0.0) EXPECT_GE(g.count_from, down_at);
+}
+
+// The count runs only while the standing boxer is count_when_away from the downed one: with that distance out of
+// reach mid-count (as if blue came back at red), the count stops at its number, the banner says why and no knock-out
+// comes however long it stops; with it back, the count goes on from where it stopped. Red is kept down (min_down_time
+// past the count), so only the count can end the match.
+TEST(MatchRules, TheCountStopsWhileTheStandingBoxerIsTooCloseAndGoesOnFromItsNumber) {
+  auto w = idle_match();
+  ASSERT_TRUE(w);
+  World& world = *w;
+  Match& mt = *world.match;
+  mt.tuning.min_down_time = 4.0 * mt.tuning.count_seconds;
+  run(world, 1.0);
+  ASSERT_TRUE(put_down(world, 0, -toward_other(world, 0)));
+  const GetUp& g = mt.getups[mt.fighter[0].getup];
+  for (int i = 0; i < 20 * kTicksPerSecond && g.counted_ticks < 4 * kTicksPerSecond; ++i) step_world(world);
+  ASSERT_EQ(g.counted_ticks, 4 * kTicksPerSecond) << "the count did not reach 4 s in 20 s";
+  EXPECT_EQ(match_hud(world).banner, "RED DOWN   5");
+  const double away = mt.tuning.count_when_away;
+  mt.tuning.count_when_away = 1e3;
+  run(world, mt.tuning.count_seconds + 1.0);
+  EXPECT_FALSE(mt.over);
+  EXPECT_EQ(g.counted_ticks, 4 * kTicksPerSecond);
+  EXPECT_GE(g.paused_ticks, static_cast<int>(mt.tuning.count_seconds) * kTicksPerSecond);
+  EXPECT_EQ(match_hud(world).banner, "RED DOWN   5   (count stopped: to the neutral corner)");
+  mt.tuning.count_when_away = away;
+  run(world, 2.0);
+  EXPECT_FALSE(mt.over);
+  EXPECT_EQ(match_hud(world).banner, "RED DOWN   7");
+  run(world, 4.5);
+  EXPECT_TRUE(mt.over);
+  EXPECT_EQ(mt.result, "KO: boxer 1 wins (boxer 0 not up at 10)");
+  EXPECT_GE(g.count_distance_min, away);
+  EXPECT_EQ(mt.teleports, 0);
 }
 
 // A 4 s round with no knock-out: red jabs an idle blue twice (player commands at 2 s), blue throws nothing. At the
