@@ -384,6 +384,7 @@ void step_world(World& w) {
   interaction_after_step(w);  // (the scenario's after_step reads this step's object hits)
   health_after_step(w);
   if (scenario.after_step) scenario.after_step(w);
+  measure_getups(w);  // after the scenario's (the match's referee calls a boxer up or down there)
   ++w.steps;
   const auto t4 = clock::now();
   w.profile.step1_ms += ms(t0, t1), w.profile.control_ms += ms(t1, t2), w.profile.step2_ms += ms(t2, t3);
@@ -518,7 +519,8 @@ nlohmann::json world_report(const World& w) {
                       {"tick_profile_ms", tick_profile_report(w)},
                       {"boxers", boxers},
                       {"interaction", interaction_report(w)},
-                      {"health", health_report(w)}};
+                      {"health", health_report(w)},
+                      {"getups", getups_report(w)}};
   if (const auto report = scenario_hooks(w.options.scenario_id).report) report(w, r);
   return r;
 }

@@ -17,6 +17,7 @@
 #include "game/arena.h"
 #include "game/boxer.h"
 #include "game/cli.h"
+#include "game/getup_metrics.h"
 #include "game/health.h"
 #include "game/ring_ropes.h"
 
@@ -84,6 +85,7 @@ struct World {
   std::unique_ptr<Interaction> interaction;  // the player's hands: drags, thrown objects, scripted and recorded input
   std::unique_ptr<Chaos> chaos;              // --chaos: seeded random input events (game/interaction/chaos.h)
   Health health;                             // measured every step (the report's health block)
+  GetUpTracker getups;                       // every knockdown and get-up, measured (the report's getups)
   RingRopesState ropes;                      // the match ring's ropes (ring_ropes.h): their push and who touched them
 };
 
