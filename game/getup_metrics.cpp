@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "game/person_strength.h"
 #include "game/world.h"
 
 namespace boxing {
@@ -97,12 +98,16 @@ nlohmann::json getups_report(const World& w) {
   nlohmann::json out = nlohmann::json::array();
   const auto& names = w.boxer_desc.skeleton.name;
   for (const GetUpRecord& r : w.getups.records) {
-    const double limit = w.boxers[r.boxer].settings.tuning.qp.joint_torque_limit;
     nlohmann::json support = nlohmann::json::object(), peak = nlohmann::json::object(),
-                   fraction = nlohmann::json::object(), phases = nlohmann::json::array();
+                   limit = nlohmann::json::object(), fraction = nlohmann::json::object(),
+                   phases = nlohmann::json::array();
     for (size_t bone = 0; bone < names.size(); ++bone) {
       if (r.support_s[bone] > 0.0) support[names[bone]] = r.support_s[bone];
-      if (bone > 0) peak[names[bone]] = r.torque_peak[bone], fraction[names[bone]] = r.torque_peak[bone] / limit;
+      const double strength = person_strength(names[bone]);
+      if (bone == 0 || strength <= 0.0) continue;
+      peak[names[bone]] = r.torque_peak[bone];
+      limit[names[bone]] = strength;
+      fraction[names[bone]] = r.torque_peak[bone] / strength;
     }
     for (const auto& [name, from] : r.phases) phases.push_back({{"name", name}, {"from_s", from}});
     auto rms = [&r](double sq_dt) { return r.time > 0.0 ? std::sqrt(sq_dt / r.time) : 0.0; };

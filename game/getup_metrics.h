@@ -22,7 +22,8 @@ struct GetUpRecord {
   double root_torque_sq_dt = 0.0, root_torque_peak = 0.0;  // N m: the root torque (the root spring / assist)
   std::vector<double> support_s;    // per bone: seconds it pressed on the crates or the floor
   // per bone: its joint's peak torque (N m, vector norm): the control's torque plus the servo springs' (Data::passive:
-  // the world-space servo drives the stand-up through implicit joint springs)
+  // the world-space servo drives the stand-up through implicit joint springs); reported against a person's strength
+  // (person_strength.h)
   std::vector<double> torque_peak;
   std::vector<std::pair<std::string, double>> phases;  // name, from (s): down, then the stand-up's clips
 };

@@ -8,6 +8,7 @@
 
 #include "game/interaction/interaction.h"
 #include "game/match/match.h"
+#include "game/person_strength.h"
 #include "game/world.h"
 
 namespace boxing {
@@ -93,6 +94,15 @@ TEST(GetUpMetrics, AMatchGetUpIsRecordedAsTheMatchCountsIt) {
   const nlohmann::json report = getups_report(world);
   ASSERT_EQ(report.size(), 1u);
   EXPECT_NEAR(report[0]["lift_force_rms_n"].get<double>(), std::sqrt(r.lift_force_sq_dt / r.time), 1e-9);
+  // Each joint's peak against a person's strength (person_strength.h): the fraction is the one over the other.
+  ASSERT_EQ(report[0]["joint_torque_peak_fraction"].size(), std::size(kPersonStrength));
+  for (size_t bone = 1; bone < names.size(); ++bone) {
+    if (person_strength(names[bone]) <= 0.0) continue;  // welded (the gloves)
+    const double limit = report[0]["joint_torque_limit_nm"][names[bone]].get<double>();
+    EXPECT_EQ(limit, person_strength(names[bone]));
+    EXPECT_NEAR(report[0]["joint_torque_peak_fraction"][names[bone]].get<double>(), r.torque_peak[bone] / limit, 1e-12);
+  }
+  EXPECT_GT(r.torque_peak[world.boxer_desc.skeleton.find("thigh_r")], 0.0);
 }
 
 // Floored in `stand` by a push (2500 N for 0.3 s), the boxer lies: nothing lifts it, so the record's lift force is 0
