@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <functional>
 #include <set>
@@ -18,6 +19,7 @@
 #include "game/match/punch_aim.h"
 #include "game/seed_rate.h"
 #include "game/match/match.h"
+#include "game/person_strength.h"
 #include "game/world.h"
 
 namespace boxing {
@@ -670,6 +672,57 @@ TEST(FighterAi, StylesAreSeededAndWithinTheirRanges) {
     EXPECT_GE(s.reaction_s, 0.18);
     EXPECT_LE(s.reaction_s, 0.26);
   }
+}
+
+// The report's `getups` (game/getup_metrics.h) against the match's own bookkeeping: red put down (red_put_down) and
+// left to get up. The record opens and closes on the ticks the match's own GetUp does, its lift force and root
+// torque integrate to what the match summed over the stand-up (the same quantities, kept twice: they agree to
+// round-off), its phases run down -> the get-up clip for how it lies -> up in time order, and the body parts that bore
+// weight include more than the feet (it lay on the crates).
+TEST(GetUpMetrics, AMatchGetUpIsRecordedAsTheMatchCountsIt) {
+  auto w = red_put_down(1, {});
+  ASSERT_TRUE(w) << "red not down";
+  World& world = *w;
+  const Match& mt = *world.match;
+  for (int i = 0; i < 20 * 240 && (mt.getups.empty() || mt.getups[0].up_at < 0.0); ++i) step_world(world);
+  ASSERT_EQ(mt.getups.size(), 1u);
+  const GetUp& g = mt.getups[0];
+  ASSERT_GE(g.up_at, 0.0) << "red not up in 20 s";
+  ASSERT_EQ(world.getups.records.size(), 1u);
+  const GetUpRecord& r = world.getups.records[0];
+  EXPECT_EQ(r.boxer, 0);
+  EXPECT_NEAR(r.down_at, g.down_at, 1.0 / 240.0 + 1e-9);
+  EXPECT_NEAR(r.up_at, g.up_at, 1.0 / 240.0 + 1e-9);
+  EXPECT_EQ(r.lying, g.lying);
+  EXPECT_NEAR(r.lift_force_sq_dt, g.assist_force_sq_dt, 1e-9 * (1.0 + g.assist_force_sq_dt));
+  EXPECT_GT(r.lift_force_peak, 0.0);  // today's stand-up is carried (issue 63)
+  EXPECT_GE(r.root_torque_sq_dt, g.assist_sq_dt * (1.0 - 1e-9));
+  ASSERT_GE(r.phases.size(), 3u);
+  EXPECT_EQ(r.phases.front().first, "down");
+  EXPECT_EQ(r.phases.back().first, "up");
+  EXPECT_NE(std::find_if(r.phases.begin(), r.phases.end(),
+                         [&](const auto& p) { return p.first == "getup_" + g.lying; }),
+            r.phases.end());
+  for (size_t i = 1; i < r.phases.size(); ++i) EXPECT_GE(r.phases[i].second, r.phases[i - 1].second);
+  const auto& names = world.boxer_desc.skeleton.name;
+  double off_feet = 0.0;
+  for (size_t bone = 0; bone < names.size(); ++bone) {
+    EXPECT_LE(r.support_s[bone], r.time + 1e-9) << names[bone];
+    if (names[bone] != "foot_l" && names[bone] != "foot_r") off_feet += r.support_s[bone];
+  }
+  EXPECT_GT(off_feet, 0.5);
+  const nlohmann::json report = getups_report(world);
+  ASSERT_EQ(report.size(), 1u);
+  EXPECT_NEAR(report[0]["lift_force_rms_n"].get<double>(), std::sqrt(r.lift_force_sq_dt / r.time), 1e-9);
+  // Each joint's peak against a person's strength (person_strength.h): the fraction is the one over the other.
+  ASSERT_EQ(report[0]["joint_torque_peak_fraction"].size(), std::size(kPersonStrength));
+  for (size_t bone = 1; bone < names.size(); ++bone) {
+    if (person_strength(names[bone]) <= 0.0) continue;  // welded (the gloves)
+    const double limit = report[0]["joint_torque_limit_nm"][names[bone]].get<double>();
+    EXPECT_EQ(limit, person_strength(names[bone]));
+    EXPECT_NEAR(report[0]["joint_torque_peak_fraction"][names[bone]].get<double>(), r.torque_peak[bone] / limit, 1e-12);
+  }
+  EXPECT_GT(r.torque_peak[world.boxer_desc.skeleton.find("thigh_r")], 0.0);
 }
 
 }  // namespace
