@@ -39,6 +39,12 @@ void index_bodies(World& w) {
 
 }  // namespace
 
+const char* lying_of(const World& w, const Boxer& b) {
+  const int chest = w.boxer_desc.skeleton.find("chest");
+  const Eigen::Vector3d front = w.data.x[b.bodies.body[chest >= 0 ? chest : 0]].R * Eigen::Vector3d::UnitX();
+  return front.z() > 0.0 ? "back" : "front";
+}
+
 void measure_getups(World& w) {
   GetUpTracker& g = w.getups;
   if (g.bone_of_body.size() != w.model.bodies.size() || g.open.size() != w.boxers.size()) index_bodies(w);
@@ -70,11 +76,7 @@ void measure_getups(World& w) {
     const std::string& phase = standing(s) ? kUp : phase_of(w, b);
     if (r.phases.back().first != phase) {
       r.phases.emplace_back(phase, t);
-      if (s == BoxerState::GettingUp && r.lying.empty()) {
-        const int chest = w.boxer_desc.skeleton.find("chest");
-        const Eigen::Vector3d front = w.data.x[b.bodies.body[chest >= 0 ? chest : 0]].R * Eigen::Vector3d::UnitX();
-        r.lying = front.z() > 0.0 ? "back" : "front";
-      }
+      if (s == BoxerState::GettingUp && r.lying.empty()) r.lying = lying_of(w, b);
     }
     r.time += dt;
     const double f = b.ctl.root_force.norm(), tau = b.ctl.root_torque.norm();

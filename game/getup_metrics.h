@@ -36,6 +36,11 @@ struct GetUpTracker {
   std::vector<char> pressing;     // per boxer x bone, this tick (scratch)
 };
 
+struct Boxer;
+// How a boxer lies: "back" when its chest's front (+X of the bone) looks up, else "front" (the referee's choice of
+// get-up and the records' `lying`).
+const char* lying_of(const World& w, const Boxer& b);
+
 // After each physics step (after fall detection).
 void measure_getups(World& w);
 nlohmann::json getups_report(const World& w);

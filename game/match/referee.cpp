@@ -6,6 +6,7 @@
 
 #include "game/boxer_stepping.h"
 #include "game/character_builder.h"
+#include "game/getup_metrics.h"
 #include "game/match/fighter_view.h"
 #include "game/match/footwork_ai.h"
 #include "game/match/footwork_metrics.h"
@@ -118,10 +119,7 @@ void while_down(World& w, int k, GetUp& g, double speed) {
   const double t = w.data.time, dt = kPhysicsDt;
   f.still = speed < tu.still_speed ? f.still + dt : 0.0;
   if (!(f.still >= tu.still_time && t - g.down_at >= tu.min_down_time)) return;
-  // Lying on the back: the chest's front (+X of the bone) looks up.
-  const int chest = mt.bones.chest;
-  const Eigen::Vector3d front = w.data.x[b.bodies.body[chest >= 0 ? chest : 0]].R * Eigen::Vector3d::UnitX();
-  g.lying = front.z() > 0.0 ? "back" : "front";
+  g.lying = lying_of(w, b);
   if (eng::anim::GraphWalker* walker = b.source.walker()) walker->force_clip(g.lying == "back" ? "getup_back" : "getup_front");
   b.ctl.root_spring.set_consciousness(tu.getup_consciousness);
   pass_through_opponent(w, k, true);
