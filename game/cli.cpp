@@ -243,6 +243,8 @@ const std::vector<Flag> kFlags = {
      "push scenario: constant force (default), or FORCE * sin(2 pi (t - start)) (Kudoh's sine)"},
     {{"--round-seconds"}, "S", number(&Options::round_seconds, 1.0, 86400.0, "a number from 1 to 86400"),
      "match: a round's length (default 180)"},
+    {{"--rounds"}, "N", integer(&Options::rounds, 1, 15, "an integer from 1 to 15"),
+     "match: the bout's rounds, a minute's rest between them (default 3)"},
     {{"--start-apart"}, "M", number(&Options::start_apart, 0.8, 3.6, "a number from 0.8 to 3.6"),
      "match: the marks' distance, pelvis to pelvis (default 2.8; less starts the fight at range)"},
     {{"--player"}, "0|1", choice<int>(&Options::player, {{"0", 0}, {"1", 1}}),

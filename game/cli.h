@@ -67,7 +67,8 @@ struct Options {
   double contact_gap = -1.0;          // m, < 0: each foot-contact purpose its own gap (FootContactThresholds)
   double root_spring_max = -1.0;      // N m, its torque limit; < 0: 400 with the QP, 120 with pd
   // match
-  double round_seconds = 180.0;       // --round-seconds: a round's length (the report's round counter)
+  double round_seconds = 180.0;       // --round-seconds: a round's length
+  int rounds = 3;                     // --rounds: the bout's rounds (bout.h)
   double start_apart = 2.8;           // --start-apart: the match's marks, pelvis to pelvis (m; arena.h kRingSeparation)
   int player = -1;                    // --player 0|1: that boxer takes the keyboard (-1: both AI)
   // the player's hands (game/interaction/)

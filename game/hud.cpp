@@ -37,7 +37,8 @@ void draw_stats_panel(const HudStats& s) {
 std::string match_clock_text(const MatchHud& h) {
   char line[64];
   const int secs = static_cast<int>(h.clock_s);
-  std::snprintf(line, sizeof line, "ROUND %d   %d:%02d", h.round, secs / 60, secs % 60);
+  if (h.resting) std::snprintf(line, sizeof line, "REST   %d:%02d", secs / 60, secs % 60);
+  else std::snprintf(line, sizeof line, "ROUND %d   %d:%02d", h.round, secs / 60, secs % 60);
   return line;
 }
 

@@ -19,7 +19,8 @@ void draw_stats_panel(const HudStats& stats);
 // knockdowns, and a banner (a knockdown's count, the result).
 struct MatchHud {
   int round = 1;
-  double clock_s = 0.0;  // left in the round
+  double clock_s = 0.0;  // left in the round (or the rest between rounds)
+  bool resting = false;  // between rounds
   struct Side {
     float consciousness = 1.0f;
     int landed = 0, thrown = 0, knockdowns = 0;

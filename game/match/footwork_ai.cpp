@@ -134,10 +134,11 @@ bool footwork_ai_tick(World& w, int k, bool free, bool just_punched) {
   FootworkMove m = FootworkMove::None;
   double turn = 0.0;
   if (f.go_to_active) {
-    // To the neutral corner, facing the downed boxer (backing off or sidling there), then waiting there.
+    // To a corner (a neutral one while the other is down, its own between rounds), facing the other boxer (backing
+    // off or sidling there), then waiting there. Away from a downed boxer first; between rounds both walk past.
     const Eigen::Vector2d to = f.go_to - me;
     turn = wrap(std::atan2(other.y() - me.y(), other.x() - me.x()) - heading);
-    if ((other - me).norm() < t.count_keep_away) {
+    if (!standing_state(w.boxers[1 - k].ctl.state.state) && (other - me).norm() < t.count_keep_away) {
       m = away_from(w, k, heading + turn, other);
     } else if (to.norm() < t.at_corner) {
       m = std::abs(turn) > t.face_within ? FootworkMove::Pivot : FootworkMove::None;

@@ -107,6 +107,7 @@ void match_setup(World& w) {
     }
   }
   footwork_setup(w);
+  bout_setup(w);
 }
 
 void match_before_control(World& w) {
@@ -121,11 +122,15 @@ void match_before_control(World& w) {
     const bool standing = standing_state(b.ctl.state.state);
     aim_punch(w, k, c, standing);
     if (f.player) {
-      take_player_command(f, b, *walker, standing && !mt.over);
+      take_player_command(f, b, *walker, standing && mt.bout.phase == BoutPhase::Fighting);
       if (f.go_to_active) footwork_ai_tick(w, k, standing && !walker->has_plan(), false);  // the referee's errand
       continue;
     }
     if (mt.over) continue;
+    if (mt.bout.phase == BoutPhase::Rest) {  // to the corner, no punches
+      if (f.go_to_active) footwork_ai_tick(w, k, standing && !walker->has_plan(), false);
+      continue;
+    }
     const FighterView v = fighter_view(w, k, c, standing);
     f.saw_punch = nullptr;
     if (v.punching) f.punching_until = w.data.time;
@@ -149,6 +154,7 @@ void match_after_step(World& w) {
   read_hits(w);
   count_balance_steps_after_hit(w);
   referee(w);
+  bout_tick(w);
   measure_footwork(w);
 }
 

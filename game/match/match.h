@@ -26,6 +26,7 @@
 
 #include "game/hud.h"
 #include "game/match/body_parts.h"
+#include "game/match/bout.h"
 #include "game/match/fighter_ai.h"
 #include "game/match/fighter_view.h"
 #include "game/match/footwork_ai.h"
@@ -238,7 +239,8 @@ struct Match {
   std::array<FootworkMetrics, 2> footwork;  // the footwork as measured (footwork_metrics.h)
   FootworkMetricsTuning footwork_tuning;
   ReplayBuffer replay;  // the last kReplaySeconds of the bodies' coordinates at 60 Hz (the window's instant replay)
-  std::string result;  // "" while fighting; set by a knock-out (or at the report: points)
+  std::string result;  // "" while fighting; the result's text once the bout is over (bout.h)
+  Bout bout;           // the rounds, the judges' cards, the result (bout.h)
 };
 
 // After the boxers exist (scenario setup + place): the body map, the AI styles (seeded), consciousness dynamics.

@@ -13,9 +13,9 @@ namespace boxing {
 MatchHud match_hud(const World& w) {
   const Match& mt = *w.match;
   MatchHud h;
-  const double t = w.data.time;
-  h.round = static_cast<int>(t / mt.round_seconds) + 1;
-  h.clock_s = std::max(0.0, h.round * mt.round_seconds - t);
+  h.round = mt.bout.round;
+  h.clock_s = bout_clock_left(w);
+  h.resting = mt.bout.phase == BoutPhase::Rest;
   for (int k = 0; k < 2 && k < static_cast<int>(w.boxers.size()); ++k) {
     const MatchFighter& f = mt.fighter[k];
     h.side[k].consciousness = static_cast<float>(w.boxers[k].ctl.root_spring.consciousness());
@@ -33,6 +33,12 @@ MatchHud match_hud(const World& w) {
         if (!g.counting) h.banner += "   (count stopped: to the neutral corner)";
       }
     }
+  }
+  // Between rounds: the round's cards (red first), the judges in order.
+  if (h.resting && !mt.bout.cards.empty()) {
+    const RoundCard& c = mt.bout.cards.back();
+    h.banner = "END OF ROUND " + std::to_string(c.round) + "  ";
+    for (const auto& j : c.judges) h.banner += "  " + std::to_string(j[0]) + "-" + std::to_string(j[1]);
   }
   if (mt.over) h.banner = mt.result;
   return h;
@@ -99,13 +105,31 @@ nlohmann::json match_report(const World& w) {
                       {"down_distance_min_m", g.down_distance_min >= 0.0 ? nlohmann::json(g.down_distance_min)
                                                                         : nlohmann::json(nullptr)}});
   auto pair = [&mt](auto get) { return nlohmann::json::array({get(mt.fighter[0]), get(mt.fighter[1])}); };
-  std::string result = mt.result;
-  if (result.empty()) {
-    const int a = mt.fighter[0].landed, b = mt.fighter[1].landed;
-    result = a == b ? "draw on points (" + std::to_string(a) + "-" + std::to_string(b) + " landed)"
-                    : "points: boxer " + std::to_string(a > b ? 0 : 1) + " wins (" + std::to_string(a) + "-" +
-                          std::to_string(b) + " landed)";
-  }
+  // The rounds scored, and (a run that ends mid-bout) the round under way scored as it stands: the result is then
+  // the decision the cards so far give, marked unfinished.
+  const Bout& bt = mt.bout;
+  std::vector<RoundCard> cards = bt.cards;
+  if (!mt.over && bt.phase == BoutPhase::Fighting && w.data.time > bt.phase_from)
+    cards.push_back(score_round(mt, bt.round, bt.phase_from, w.data.time));
+  nlohmann::json rounds = nlohmann::json::array();
+  for (const RoundCard& c : cards)
+    rounds.push_back({{"round", c.round}, {"from_s", c.from_s}, {"to_s", c.to_s}, {"landed", c.landed},
+                      {"thrown", c.thrown}, {"knockdowns", c.knockdowns}, {"judges", c.judges}});
+  const std::array<int, 3> d = decide(cards);
+  const int winner = mt.over ? bt.result.winner : d[0];
+  const bool resting = !mt.over && bt.phase == BoutPhase::Rest && !cards.empty();  // the last card's round is over
+  const nlohmann::json result = {
+      {"winner", winner >= 0 ? nlohmann::json(winner) : nlohmann::json(nullptr)},
+      {"method", mt.over ? bt.result.method : (d[0] < 0 ? "draw" : "decision")},
+      {"round", resting ? cards.back().round : bt.round},
+      {"time_s", mt.over    ? bt.result.time_s
+                 : resting ? cards.back().to_s - cards.back().from_s
+                           : w.data.time - bt.phase_from},
+      {"finished", mt.over},
+      {"judges_for", {d[1], d[2]}}};  // judges whose cards name red, blue
+  const std::string result_text = mt.over       ? mt.result
+                                  : winner < 0 ? "DRAW SO FAR"
+                                               : std::string(winner == 0 ? "RED" : "BLUE") + " AHEAD ON POINTS";
   std::vector<double> speeds, fists;
   for (const PunchEvent& e : mt.events)
     if (e.landed) speeds.push_back(e.speed), fists.push_back(e.fist_speed);
@@ -133,12 +157,15 @@ nlohmann::json match_report(const World& w) {
            })},
           {"player_commands_taken", pair([](const MatchFighter& f) { return f.commands_taken; })},
           {"round_seconds", mt.round_seconds},
-          {"round", static_cast<int>(w.data.time / mt.round_seconds) + 1},
+          {"round", bt.round},
+          {"rounds_scheduled", bt.tuning.rounds},
+          {"rounds", rounds},
           {"ended_at_s", w.data.time},  // the run's end: a knockdown less than the count before it has no up_at_s yet
           {"getups", getups},
           {"teleports", mt.teleports},
           {"fighters", footwork_report(w)},
           {"result", result},
+          {"result_text", result_text},
           {"events", events}};
 }
 

@@ -225,9 +225,7 @@ void referee(World& w) {
       }
     }
     if (!mt.over && g.counted_ticks > std::lround(tu.count_seconds / kPhysicsDt)) {
-      mt.over = true;
-      mt.result = "KO: boxer " + std::to_string(1 - k) + " wins (boxer " + std::to_string(k) + " not up at " +
-                  std::to_string(static_cast<int>(tu.count_seconds)) + ")";
+      bout_end(w, 1 - k, "ko");
     }
   }
 }

@@ -5,7 +5,8 @@
 //    count) is counted 1 to 10 on the HUD's banner and loses by KO the tick the count passes count_seconds;
 //  * the neutral corner: a standing opponent within neutral_corner_within of the downed boxer's pelvis when its get-up
 //    starts is sent to its mark; out of that distance it stays where it is;
-//  * points: with no knock-out, the result at the round's end names whoever landed more;
+//  * the bout: at the last round's bell the judges' decision (each judge's card from the round's landed punches and
+//    knockdowns, 10-point must); the three-knockdown rule; a rest between rounds in the corners;
 //  * the HUD's round clock: round number and m:ss left.
 #include <gtest/gtest.h>
 
@@ -22,13 +23,15 @@ namespace {
 
 constexpr int kTicksPerSecond = 240;
 
-std::unique_ptr<World> idle_match(double round_seconds = 180.0) {
+std::unique_ptr<World> idle_match(double round_seconds = 180.0, int rounds = 3, double start_apart = -1.0) {
   Options o;
   o.headless = true;
   o.scenario_id = Scenario::Match;
   o.scenario = "match";
   o.seed = 1;
   o.round_seconds = round_seconds;
+  o.rounds = rounds;
+  if (start_apart > 0.0) o.start_apart = start_apart;
   auto w = make_world(o);
   EXPECT_TRUE(w) << w.error();
   if (!w) return nullptr;
@@ -117,10 +120,17 @@ void knock_out_at_ten(int k) {
   EXPECT_EQ(g.counted_ticks, static_cast<int>(mt.tuning.count_seconds) * kTicksPerSecond + 1);
   EXPECT_NEAR(over_at - g.count_from, static_cast<double>(g.counted_ticks + g.paused_ticks) / kTicksPerSecond, 1e-9);
   EXPECT_GE(g.count_distance_min, mt.tuning.count_when_away);
-  const std::string ko = "KO: boxer " + std::to_string(1 - k) + " wins (boxer " + std::to_string(k) + " not up at 10)";
-  EXPECT_EQ(mt.result, ko);
-  EXPECT_EQ(match_hud(world).banner, ko);
-  EXPECT_EQ(match_report(world)["result"], ko);
+  // The bout ends at once: the winner, by KO, in round 1 at the time the count passed ten.
+  const std::string ko = std::string(k == 1 ? "RED" : "BLUE") + " WINS BY KO IN ROUND 1";
+  EXPECT_EQ(mt.result.rfind(ko, 0), 0u) << mt.result;
+  EXPECT_EQ(match_hud(world).banner, mt.result);
+  const nlohmann::json r = match_report(world)["result"];
+  EXPECT_EQ(r["winner"], 1 - k);
+  EXPECT_EQ(r["method"], "ko");
+  EXPECT_EQ(r["round"], 1);
+  EXPECT_NEAR(r["time_s"].get<double>(), over_at, 1e-9);
+  EXPECT_TRUE(r["finished"].get<bool>());
+  EXPECT_EQ(mt.bout.phase, BoutPhase::Over);
   EXPECT_EQ(world.boxers[k].ctl.state.state, BoxerState::Down);
   EXPECT_LT(mt.getups[mt.fighter[k].getup].up_at, 0.0);  // never up
 }
@@ -190,46 +200,135 @@ TEST(MatchRules, TheCountStopsWhileTheStandingBoxerIsTooCloseAndGoesOnFromItsNum
   EXPECT_EQ(match_hud(world).banner, "RED DOWN   7");
   run(world, 4.5);
   EXPECT_TRUE(mt.over);
-  EXPECT_EQ(mt.result, "KO: boxer 1 wins (boxer 0 not up at 10)");
+  EXPECT_EQ(mt.bout.result.method, "ko");
+  EXPECT_EQ(mt.bout.result.winner, 1);
   EXPECT_GE(g.count_distance_min, away);
   EXPECT_EQ(mt.teleports, 0);
 }
 
-// A 4 s round with no knock-out: red jabs an idle blue twice (player commands at 2 s), blue throws nothing. At the
-// round's end the report's result is points, for whoever landed more by the match's own count (seed 1: red's first
-// jab lands on the head, 1-0; a jab blocked on the glove would make it a draw, which the same rule says). Then the
-// rule itself, with the counts set: blue ahead names blue, level is a draw.
-TEST(MatchRules, AtTheRoundsEndTheBoxerWhoLandedMoreWinsOnPoints) {
-  auto w = idle_match(4.0);
+// One round of 4 s: red jabs an idle blue twice (player commands at 2 s), blue throws nothing. At the bell the bout
+// is over at once: the round's card (its punches, the fighters' own counts) and the judges' decision, which names red
+// if a jab landed (every judge's measure is then red's alone) and is a draw if none did.
+TEST(MatchRules, AtTheLastBellTheJudgesCardsDecideTheBout) {
+  auto w = idle_match(4.0, 1, 0.95);  // at punching range: a jab can land
   ASSERT_TRUE(w);
   World& world = *w;
   Match& mt = *world.match;
   run(world, 2.0);
   for (int i = 0; i < 2; ++i) match_command(world, 0, FightCommand::Jab);
-  while (world.data.time < mt.round_seconds) step_world(world);
-  ASSERT_FALSE(mt.over);
-  ASSERT_TRUE(mt.result.empty());
+  while (world.data.time < mt.round_seconds - 1e-6) {
+    EXPECT_FALSE(mt.over);
+    step_world(world);
+  }
+  step_world(world);
+  ASSERT_TRUE(mt.over);
   EXPECT_GE(mt.fighter[0].thrown, 1);
   EXPECT_EQ(mt.fighter[1].thrown, 0);
-  const auto points = [](int red, int blue) {
-    const std::string score = std::to_string(red) + "-" + std::to_string(blue) + " landed)";
-    return red == blue ? "draw on points (" + score
-                       : "points: boxer " + std::string(red > blue ? "0" : "1") + " wins (" + score;
-  };
-  const int red = mt.fighter[0].landed, blue = mt.fighter[1].landed;
-  EXPECT_EQ(blue, 0);
+  const int red = mt.fighter[0].landed;
   const nlohmann::json r = match_report(world);
-  EXPECT_EQ(r["round"], 2);  // the round is over
-  EXPECT_EQ(r["result"], points(red, blue)) << red << " landed of " << mt.fighter[0].thrown;
-  std::printf("round of 4 s: red landed %d of %d, blue %d: %s\n", red, mt.fighter[0].thrown, blue,
-              r["result"].get<std::string>().c_str());
-  // The rule, each way (the counts are the match's state; the rule is the report's).
-  mt.fighter[0].landed = 3, mt.fighter[1].landed = 1;
-  EXPECT_EQ(match_report(world)["result"], "points: boxer 0 wins (3-1 landed)");
-  mt.fighter[1].landed = 5;
-  EXPECT_EQ(match_report(world)["result"], "points: boxer 1 wins (3-5 landed)");
-  mt.fighter[1].landed = 3;
-  EXPECT_EQ(match_report(world)["result"], "draw on points (3-3 landed)");
+  ASSERT_EQ(r["rounds"].size(), 1u);
+  const nlohmann::json& card = r["rounds"][0];
+  EXPECT_EQ(card["landed"][0], red);
+  EXPECT_EQ(card["thrown"][0], mt.fighter[0].thrown);
+  EXPECT_EQ(card["thrown"][1], 0);
+  for (const auto& j : card["judges"]) EXPECT_EQ(j, red > 0 ? nlohmann::json({10, 9}) : nlohmann::json({10, 10}));
+  EXPECT_EQ(r["result"]["method"], red > 0 ? "decision" : "draw");
+  if (red > 0) {
+    EXPECT_EQ(r["result"]["winner"], 0);
+  }
+  EXPECT_EQ(r["result"]["round"], 1);
+  std::printf("round of 4 s: red landed %d of %d: %s\n", red, mt.fighter[0].thrown, mt.result.c_str());
+}
+
+// The judges' rule on its own (judge_round): the round's winner by the judge's measure 10, the loser 9; even within
+// even_share: 10-10; a knockdown costs the downed boxer a point, then both are raised until the better has 10.
+TEST(BoutRules, AJudgeScoresTenPointMustFromTheLandedPunchesAndTheKnockdowns) {
+  const BoutTuning t;
+  std::vector<PunchEvent> ev;
+  auto land = [&](int boxer, double at, double damage) {
+    PunchEvent e;
+    e.t = at, e.boxer = boxer, e.landed = true, e.damage = damage, e.impulse = 10.0 * damage;
+    ev.push_back(e);
+  };
+  land(0, 1.0, 0.1), land(0, 2.0, 0.1), land(0, 3.0, 0.1), land(1, 4.0, 0.25);
+  const std::array<int, 2> none{0, 0};
+  EXPECT_EQ(judge_round(JudgeReads::Landed, ev, 0.0, 10.0, none, t), (std::array<int, 2>{10, 9}));  // 3 to 1
+  EXPECT_EQ(judge_round(JudgeReads::Damage, ev, 0.0, 10.0, none, t), (std::array<int, 2>{10, 9}));  // 0.30 to 0.25
+  EXPECT_EQ(judge_round(JudgeReads::Impulse, ev, 0.0, 10.0, none, t), (std::array<int, 2>{10, 9}));
+  EXPECT_EQ(judge_round(JudgeReads::Landed, ev, 3.0, 10.0, none, t), (std::array<int, 2>{10, 10}));  // 1 to 1: even
+  EXPECT_EQ(judge_round(JudgeReads::Landed, ev, 0.0, 2.5, none, t), (std::array<int, 2>{10, 9}));   // the window
+  // A knockdown: the round's loser on punches who also went down 10-8; the winner on punches who went down 9-9 -> 10-10.
+  EXPECT_EQ(judge_round(JudgeReads::Landed, ev, 0.0, 10.0, {0, 1}, t), (std::array<int, 2>{10, 8}));
+  EXPECT_EQ(judge_round(JudgeReads::Landed, ev, 0.0, 10.0, {1, 0}, t), (std::array<int, 2>{10, 10}));
+  EXPECT_EQ(judge_round(JudgeReads::Landed, ev, 0.0, 10.0, {0, 5}, t), (std::array<int, 2>{10, t.min_score}));
+  // The decision: each judge's totals, then the boxer more judges name.
+  RoundCard a, b;
+  a.judges = {{{10, 9}, {10, 9}, {9, 10}}};
+  b.judges = {{{10, 9}, {10, 9}, {10, 10}}};
+  EXPECT_EQ(decide({a, b}), (std::array<int, 3>{0, 2, 1}));   // 20-18, 20-18, 19-20: red by a split decision
+  b.judges = {{{9, 10}, {10, 9}, {10, 10}}};
+  EXPECT_EQ(decide({a, b}), (std::array<int, 3>{-1, 1, 1}));  // 19-19, 20-18, 19-20: a split draw
+  b.judges = {{{9, 10}, {9, 10}, {10, 10}}};
+  EXPECT_EQ(decide({a, b}), (std::array<int, 3>{-1, 0, 1}));  // 19-19, 19-19, 19-20: one card is no majority (a draw)
+}
+
+// Three knockdowns of one boxer in one round end the bout at once: a technical knock-out (the counts' GetUps made as
+// the referee makes them, the knockdowns counted by the match).
+TEST(MatchRules, ThreeKnockdownsInARoundAreATechnicalKnockOut) {
+  auto w = idle_match(180.0);
+  ASSERT_TRUE(w);
+  World& world = *w;
+  Match& mt = *world.match;
+  run(world, 1.0);
+  mt.fighter[1].knockdowns = mt.bout.knockdowns0[1] + mt.bout.tuning.tko_knockdowns - 1;
+  step_world(world);
+  EXPECT_FALSE(mt.over);
+  ++mt.fighter[1].knockdowns;
+  step_world(world);
+  ASSERT_TRUE(mt.over);
+  const nlohmann::json r = match_report(world)["result"];
+  EXPECT_EQ(r["winner"], 0);
+  EXPECT_EQ(r["method"], "tko");
+  EXPECT_EQ(r["round"], 1);
+  EXPECT_EQ(mt.result.rfind("RED WINS BY TKO IN ROUND 1", 0), 0u) << mt.result;
+}
+
+// Between rounds: at the bell both boxers walk to two opposite corners (no punches), the HUD shows the rest's clock and
+// the round's cards, and the next round starts after rest_seconds with each boxer given back rest_recovery of the
+// consciousness it was missing.
+TEST(MatchRules, BetweenRoundsTheBoxersRestInOppositeCornersAndRecover) {
+  auto w = idle_match(3.0, 2);
+  ASSERT_TRUE(w);
+  World& world = *w;
+  Match& mt = *world.match;
+  mt.bout.tuning.rest_seconds = 12.0;
+  while (mt.bout.phase == BoutPhase::Fighting) step_world(world);
+  ASSERT_EQ(mt.bout.phase, BoutPhase::Rest);
+  ASSERT_EQ(mt.bout.cards.size(), 1u);
+  EXPECT_TRUE(match_hud(world).resting);
+  EXPECT_EQ(match_clock_text(match_hud(world)), "REST   0:12");
+  EXPECT_EQ(match_hud(world).banner.rfind("END OF ROUND 1", 0), 0u);
+  // Opposite corners: the spots 2 x (half the ring less the inset) apart each way.
+  const Eigen::Vector2d c0(mt.bout.corner_x[0], mt.bout.corner_y[0]), c1(mt.bout.corner_x[1], mt.bout.corner_y[1]);
+  EXPECT_NEAR((c0 + c1).norm(), 0.0, 1e-12);
+  for (int k = 0; k < 2; ++k) world.boxers[k].ctl.root_spring.set_consciousness(0.6);
+  const int thrown = mt.fighter[0].thrown + mt.fighter[1].thrown;
+  double closer[2] = {0.0, 0.0}, before[2] = {0.0, 0.0};
+  for (int k = 0; k < 2; ++k) closer[k] = (world.data.x[world.boxers[k].bodies.body[0]].p.head<2>() - (k ? c1 : c0)).norm();
+  while (mt.bout.phase == BoutPhase::Rest) {
+    for (int k = 0; k < 2; ++k) before[k] = world.boxers[k].ctl.root_spring.consciousness();
+    step_world(world);
+  }
+  EXPECT_EQ(mt.bout.round, 2);
+  EXPECT_EQ(mt.fighter[0].thrown + mt.fighter[1].thrown, thrown);  // no punches in the rest
+  for (int k = 0; k < 2; ++k) {
+    const double now = (world.data.x[world.boxers[k].bodies.body[0]].p.head<2>() - (k ? c1 : c0)).norm();
+    std::printf("boxer %d: %.2f m from its corner at the bell, %.2f m after the rest\n", k, closer[k], now);
+    EXPECT_LT(now, closer[k] - 0.5);  // walked most of the way (a corner is ~2.2 m from a mark)
+    // Half of what was missing at the rest's last tick given back (to the tick's own recovery, under 1e-3).
+    EXPECT_NEAR(world.boxers[k].ctl.root_spring.consciousness(), before[k] + 0.5 * (1.0 - before[k]), 1e-3);
+    EXPECT_LT(before[k], 0.9);
+  }
 }
 
 // The HUD's clock: the round and the whole seconds left in it as m:ss, from the match time and --round-seconds.
@@ -248,11 +347,12 @@ TEST(MatchRules, TheHudShowsTheRoundAndTheTimeLeftAsMinutesAndSeconds) {
   EXPECT_EQ(at(61.25), "ROUND 1   1:58");
   EXPECT_EQ(at(170.0), "ROUND 1   0:10");
   EXPECT_EQ(at(179.99), "ROUND 1   0:00");
-  EXPECT_EQ(at(180.0), "ROUND 2   3:00");
-  EXPECT_EQ(at(425.0), "ROUND 3   1:55");
-  world.match->round_seconds = 90.0;  // --round-seconds 90
+  // The round and its start are the bout's (bout.h): round 2 of 90 s rounds, begun at 150 s (after a minute's rest).
+  Bout& bt = world.match->bout;
+  bt.round_seconds = 90.0;  // --round-seconds 90
   EXPECT_EQ(at(30.0), "ROUND 1   1:00");
-  EXPECT_EQ(at(95.0), "ROUND 2   1:25");
+  bt.round = 2, bt.phase_from = 150.0;
+  EXPECT_EQ(at(155.0), "ROUND 2   1:25");
   // No banner while both stand and the fight goes on.
   EXPECT_EQ(match_hud(world).banner, "");
 }
