@@ -41,12 +41,11 @@ void send_to_corners(World& w) {
       const double walk = (at[0] - s * c).norm() + (at[1] + s * c).norm();
       if (walk >= best) continue;
       best = walk;
-      bt.corner_x = {s * c.x(), -s * c.x()};
-      bt.corner_y = {s * c.y(), -s * c.y()};
+      bt.corner = {s * c, -s * c};
     }
   for (int k = 0; k < 2; ++k) {
     MatchFighter& f = w.match->fighter[k];
-    f.go_to = Eigen::Vector2d(bt.corner_x[k], bt.corner_y[k]);
+    f.go_to = bt.corner[k];
     f.go_to_active = true;
   }
 }
@@ -110,12 +109,10 @@ std::array<int, 3> decide(const std::vector<RoundCard>& cards) {
 }
 
 void bout_setup(World& w) {
-  Match& mt = *w.match;
-  Bout& bt = mt.bout;
+  Bout& bt = w.match->bout;
   bt = Bout{};
   bt.tuning.rounds = w.options.rounds;
   bt.round_seconds = w.options.round_seconds;
-  mt.round_seconds = bt.round_seconds;
 }
 
 void bout_end(World& w, int winner, const char* method) {
@@ -134,7 +131,6 @@ void bout_end(World& w, int winner, const char* method) {
   std::string how = r.method == "ko" ? "BY KO" : r.method == "tko" ? "BY TKO" : "ON POINTS";
   r.text = winner < 0 ? "DRAW" : std::string(corner_name(winner)) + " WINS " + how;
   if (r.method == "ko" || r.method == "tko") r.text += " IN ROUND " + std::to_string(r.round) + " (" + clock_text(r.time_s) + ")";
-  mt.result = r.text;
 }
 
 void bout_tick(World& w) {

@@ -4,6 +4,7 @@
 // scoring each round on the 10-point must system, and the result: a knock-out (not up by ten, referee.cpp), a
 // technical knock-out (tko_knockdowns knockdowns in one round: the three-knockdown rule), else the judges' decision or
 // a draw. Rules and their sources: docs/decisions/bout-rules.md.
+#include <Eigen/Core>
 #include <array>
 #include <string>
 #include <vector>
@@ -54,7 +55,7 @@ struct Bout {
   std::array<int, 2> landed0{}, thrown0{}, knockdowns0{};  // the fighters' totals at this round's bell
   std::vector<RoundCard> cards;              // the rounds scored so far
   BoutResult result;
-  std::array<double, 2> corner_x{}, corner_y{};  // the corners the boxers rest in (world m; set at each bell)
+  std::array<Eigen::Vector2d, 2> corner{};  // the corners the boxers rest in (world m, floor plane; set at each bell)
 };
 
 // One judge's card for a round: reading `what` of the round's landed punches (events in [from, to)), the round's

@@ -72,7 +72,6 @@ void match_setup(World& w) {
   mt.bones.glove[0] = skel.find("glove_l"), mt.bones.glove[1] = skel.find("glove_r");
   mt.bones.forearm[0] = skel.find("forearm_l"), mt.bones.forearm[1] = skel.find("forearm_r");
   mt.bones.upper_arm[0] = skel.find("upper_arm_l"), mt.bones.upper_arm[1] = skel.find("upper_arm_r");
-  mt.round_seconds = w.options.round_seconds;
   mt.replay.init(static_cast<int>(kReplaySeconds * 60.0), static_cast<int>(w.data.q.size()));
   for (int k = 0; k < 2 && k < static_cast<int>(w.boxers.size()); ++k) {
     MatchFighter& f = mt.fighter[k];

@@ -233,13 +233,11 @@ struct Match {
   std::array<MatchFighter, 2> fighter;
   std::vector<PunchEvent> events;
   std::vector<GetUp> getups;
-  double round_seconds = 180.0;
   bool over = false;
   int teleports = 0;   // a boxer's pose set directly after the start (footwork_metrics.h: a pelvis jump no velocity explains)
   std::array<FootworkMetrics, 2> footwork;  // the footwork as measured (footwork_metrics.h)
   FootworkMetricsTuning footwork_tuning;
   ReplayBuffer replay;  // the last kReplaySeconds of the bodies' coordinates at 60 Hz (the window's instant replay)
-  std::string result;  // "" while fighting; the result's text once the bout is over (bout.h)
   Bout bout;           // the rounds, the judges' cards, the result (bout.h)
 };
 

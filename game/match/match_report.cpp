@@ -40,7 +40,7 @@ MatchHud match_hud(const World& w) {
     h.banner = "END OF ROUND " + std::to_string(c.round) + "  ";
     for (const auto& j : c.judges) h.banner += "  " + std::to_string(j[0]) + "-" + std::to_string(j[1]);
   }
-  if (mt.over) h.banner = mt.result;
+  if (mt.over) h.banner = mt.bout.result.text;
   return h;
 }
 
@@ -127,7 +127,7 @@ nlohmann::json match_report(const World& w) {
                            : w.data.time - bt.phase_from},
       {"finished", mt.over},
       {"judges_for", {d[1], d[2]}}};  // judges whose cards name red, blue
-  const std::string result_text = mt.over       ? mt.result
+  const std::string result_text = mt.over       ? bt.result.text
                                   : winner < 0 ? "DRAW SO FAR"
                                                : std::string(winner == 0 ? "RED" : "BLUE") + " AHEAD ON POINTS";
   std::vector<double> speeds, fists;
@@ -156,7 +156,7 @@ nlohmann::json match_report(const World& w) {
                                    {"punch_weight", s.punch_weight}};
            })},
           {"player_commands_taken", pair([](const MatchFighter& f) { return f.commands_taken; })},
-          {"round_seconds", mt.round_seconds},
+          {"round_seconds", bt.round_seconds},
           {"round", bt.round},
           {"rounds_scheduled", bt.tuning.rounds},
           {"rounds", rounds},

@@ -122,8 +122,8 @@ void knock_out_at_ten(int k) {
   EXPECT_GE(g.count_distance_min, mt.tuning.count_when_away);
   // The bout ends at once: the winner, by KO, in round 1 at the time the count passed ten.
   const std::string ko = std::string(k == 1 ? "RED" : "BLUE") + " WINS BY KO IN ROUND 1";
-  EXPECT_EQ(mt.result.rfind(ko, 0), 0u) << mt.result;
-  EXPECT_EQ(match_hud(world).banner, mt.result);
+  EXPECT_EQ(mt.bout.result.text.rfind(ko, 0), 0u) << mt.bout.result.text;
+  EXPECT_EQ(match_hud(world).banner, mt.bout.result.text);
   const nlohmann::json r = match_report(world)["result"];
   EXPECT_EQ(r["winner"], 1 - k);
   EXPECT_EQ(r["method"], "ko");
@@ -216,7 +216,7 @@ TEST(MatchRules, AtTheLastBellTheJudgesCardsDecideTheBout) {
   Match& mt = *world.match;
   run(world, 2.0);
   for (int i = 0; i < 2; ++i) match_command(world, 0, FightCommand::Jab);
-  while (world.data.time < mt.round_seconds - 1e-6) {
+  while (world.data.time < mt.bout.round_seconds - 1e-6) {
     EXPECT_FALSE(mt.over);
     step_world(world);
   }
@@ -237,7 +237,7 @@ TEST(MatchRules, AtTheLastBellTheJudgesCardsDecideTheBout) {
     EXPECT_EQ(r["result"]["winner"], 0);
   }
   EXPECT_EQ(r["result"]["round"], 1);
-  std::printf("round of 4 s: red landed %d of %d: %s\n", red, mt.fighter[0].thrown, mt.result.c_str());
+  std::printf("round of 4 s: red landed %d of %d: %s\n", red, mt.fighter[0].thrown, mt.bout.result.text.c_str());
 }
 
 // The judges' rule on its own (judge_round): the round's winner by the judge's measure 10, the loser 9; even within
@@ -290,7 +290,7 @@ TEST(MatchRules, ThreeKnockdownsInARoundAreATechnicalKnockOut) {
   EXPECT_EQ(r["winner"], 0);
   EXPECT_EQ(r["method"], "tko");
   EXPECT_EQ(r["round"], 1);
-  EXPECT_EQ(mt.result.rfind("RED WINS BY TKO IN ROUND 1", 0), 0u) << mt.result;
+  EXPECT_EQ(mt.bout.result.text.rfind("RED WINS BY TKO IN ROUND 1", 0), 0u) << mt.bout.result.text;
 }
 
 // Between rounds: at the bell both boxers walk to two opposite corners (no punches), the HUD shows the rest's clock and
@@ -309,7 +309,7 @@ TEST(MatchRules, BetweenRoundsTheBoxersRestInOppositeCornersAndRecover) {
   EXPECT_EQ(match_clock_text(match_hud(world)), "REST   0:12");
   EXPECT_EQ(match_hud(world).banner.rfind("END OF ROUND 1", 0), 0u);
   // Opposite corners: the spots 2 x (half the ring less the inset) apart each way.
-  const Eigen::Vector2d c0(mt.bout.corner_x[0], mt.bout.corner_y[0]), c1(mt.bout.corner_x[1], mt.bout.corner_y[1]);
+  const Eigen::Vector2d c0 = mt.bout.corner[0], c1 = mt.bout.corner[1];
   EXPECT_NEAR((c0 + c1).norm(), 0.0, 1e-12);
   for (int k = 0; k < 2; ++k) world.boxers[k].ctl.root_spring.set_consciousness(0.6);
   const int thrown = mt.fighter[0].thrown + mt.fighter[1].thrown;
