@@ -36,7 +36,7 @@ void send_to_corners(World& w) {
   Eigen::Vector2d at[2];
   for (int k = 0; k < 2; ++k) at[k] = w.data.x[w.boxers[k].bodies.body[0]].p.head<2>();
   double best = 1e300;
-  for (const Eigen::Vector2d c : {Eigen::Vector2d(half.x(), half.y()), Eigen::Vector2d(half.x(), -half.y())})
+  for (const Eigen::Vector2d& c : {Eigen::Vector2d(half.x(), half.y()), Eigen::Vector2d(half.x(), -half.y())})
     for (const double s : {1.0, -1.0}) {  // red to s c, blue to -s c
       const double walk = (at[0] - s * c).norm() + (at[1] + s * c).norm();
       if (walk >= best) continue;
