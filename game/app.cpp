@@ -268,6 +268,7 @@ struct WindowRun {
   bool ui_visible = true;  // the HUD and the screens (--no-overlay: none, a clean picture)
   PanelState panel;
   FrontEnd front;        // the screens: title, playing, paused, result (front_end.h)
+  std::string title;     // the window's title now
   std::vector<std::string> log;  // what the keys and menus did, in order (the report's front_end.log; tests read it)
   MouseHands hands;
   bool left_was_down = false;
@@ -387,14 +388,15 @@ void handle_menu_keys(WindowRun& s) {
       {GLFW_KEY_UP, MenuKey::Up},       {GLFW_KEY_DOWN, MenuKey::Down},      {GLFW_KEY_LEFT, MenuKey::Left},
       {GLFW_KEY_RIGHT, MenuKey::Right}, {GLFW_KEY_ENTER, MenuKey::Enter},    {GLFW_KEY_KP_ENTER, MenuKey::Enter},
       {GLFW_KEY_SPACE, MenuKey::Enter}, {GLFW_KEY_ESCAPE, MenuKey::Back}};
-  for (const auto& [key, menu_key] : kMenuKeys) {
-    if (!s.win.key_pressed(key)) continue;
-    if (s.front.screen == Screen::Playing && menu_key != MenuKey::Back) continue;  // the arrows are not the game's
-    const Screen was = s.front.screen;
-    const FrontAction a = front_end_key(s.front, menu_key);
-    if (s.front.screen != was) s.log.push_back(screen_name(s.front.screen));
-    carry_out(s, a);
-  }
+  for (const int pressed : s.win.keys_pressed())  // in order: two quick Downs move the cursor two rows
+    for (const auto& [key, menu_key] : kMenuKeys) {
+      if (key != pressed) continue;
+      if (s.front.screen == Screen::Playing && menu_key != MenuKey::Back) continue;  // the arrows are not the game's
+      const Screen was = s.front.screen;
+      const FrontAction a = front_end_key(s.front, menu_key);
+      if (s.front.screen != was) s.log.push_back(screen_name(s.front.screen));
+      carry_out(s, a);
+    }
 }
 
 // The keys, unless a text field the player clicked has them: the menus'; then, playing, the debug overlay, the ghost,
@@ -609,6 +611,22 @@ void save_screenshot_if_asked(WindowRun& s) {
   else std::fprintf(stderr, "boxing: screenshot failed\n");
 }
 
+// The window's title says what runs and the screen: "Boxing - title (seed 1)", "Boxing - play (seed 3)", "Boxing -
+// play (seed 3) - result" (a player sees it; a window test finds its window by it and waits on its screen).
+std::string window_title(const FrontEnd& fe, const Options& world) {
+  const std::string seed = " (seed " + std::to_string(world.seed) + ")";
+  if (fe.screen == Screen::Title) return "Boxing - title" + seed;
+  const std::string what = "Boxing - " + (world.mode.empty() ? world.scenario : world.mode) + seed;
+  return fe.screen == Screen::Playing ? what : what + " - " + screen_name(fe.screen);
+}
+
+void update_title(WindowRun& s) {
+  std::string t = window_title(s.front, s.world->options);
+  if (t == s.title) return;
+  s.win.set_title(t);
+  s.title = std::move(t);
+}
+
 // After the window closes: the report, the recording, and the exit code (1 on a validation error).
 int finish_windowed(WindowRun& s) {
   World& w = *s.world;
@@ -649,10 +667,7 @@ int run_windowed(const Options& o) {
   eng::platform::WindowConfig wc;
   wc.width = o.width;
   wc.height = o.height;
-  // The scenario (or the mode, or the title screen) and seed in the title (a player sees what runs; a test's xdotool
-  // finds its own window).
-  wc.title = "Boxing - " + (title ? std::string("title") : o.mode.empty() ? o.scenario : o.mode) + " (seed " +
-             std::to_string(o.seed) + ")";
+  wc.title = window_title(front_end_for(o), title ? apply_mode(o, Mode::Watch) : o);
   auto window = eng::platform::Window::create(wc);
   if (!window) {
     std::fprintf(stderr, "boxing: %s\n", window.error().c_str());
@@ -664,6 +679,7 @@ int run_windowed(const Options& o) {
     return 1;
   }
   WindowRun s(o, world, **window, **renderer);
+  s.title = wc.title;
   while (!s.win.should_close()) {
     restart_if_asked(s);
     s.win.poll_events();
@@ -673,6 +689,7 @@ int run_windowed(const Options& o) {
     step_simulation(s);
     watch_for_replay(s);
     draw_panels(s);
+    update_title(s);
     if (s.win.minimized()) continue;
     if (!render_frame(s, in)) return 1;
     save_screenshot_if_asked(s);

@@ -57,14 +57,14 @@ bool menu_row(const char* id, float y, float width, float height, int row, int& 
 }
 
 // A row's label, highlighted when it has the cursor.
-void row_label(ImDrawList* dl, const HudFonts& f, float y, float width, bool selected, const std::string& text) {
+void row_label(ImDrawList* dl, const HudFonts& f, float y, float width, float h, bool selected, const std::string& text) {
   const ImGuiIO& io = ImGui::GetIO();
-  const float cx = 0.5f * io.DisplaySize.x, h = size_of(f.large) + 10.0f;
+  const float cx = 0.5f * io.DisplaySize.x;
   if (selected) {
     dl->AddRectFilled(ImVec2(cx - 0.5f * width, y), ImVec2(cx + 0.5f * width, y + h), IM_COL32(200, 40, 30, 150), 6.0f);
     dl->AddRect(ImVec2(cx - 0.5f * width, y), ImVec2(cx + 0.5f * width, y + h), kGold, 6.0f, 0, 2.0f);
   }
-  hud_text(dl, f.large, cx, y + 5.0f, 0.5f, selected ? kGold : kWhite, text.c_str());
+  hud_text(dl, f.large, cx, y + 0.5f * (h - size_of(f.large)), 0.5f, selected ? kGold : kWhite, text.c_str());
 }
 
 const char* level_word(int level) { return level == 0 ? "EASY" : level == 2 ? "HARD" : "NORMAL"; }
@@ -83,7 +83,8 @@ FrontAction draw_title(FrontEnd& fe, const HudFonts& f) {
   const float W = io.DisplaySize.x, H = io.DisplaySize.y, cx = 0.5f * W;
   ImDrawList* dl = begin_screen("##title", 120);
   const float huge = size_of(f.huge), large = size_of(f.large);
-  const float top = std::max(16.0f, 0.08f * H);
+  const bool roomy = H >= 680.0f;  // 1280x720 and up; smaller windows (960x540) get a tighter menu
+  const float top = roomy ? 0.08f * H : 0.03f * H;
   hud_text(dl, f.huge, cx, top, 0.5f, kWhite, "BOXING");
   dl->AddRectFilled(ImVec2(cx - 160.0f, top + huge + 4.0f), ImVec2(cx - 4.0f, top + huge + 10.0f),
                     IM_COL32(200, 35, 28, 255));
@@ -100,8 +101,8 @@ FrontAction draw_title(FrontEnd& fe, const HudFonts& f) {
                               "ROUNDS   <  " + std::to_string(s.rounds) + "  >",
                               "SEED   <  " + std::to_string(s.seed) + "  >",
                               "QUIT"};
-  const float row_h = large + 10.0f, gap = std::min(8.0f, std::max(2.0f, (H - 520.0f) / 20.0f));
-  float y = top + huge + 56.0f;
+  const float row_h = large + (roomy ? 10.0f : 4.0f), gap = roomy ? 6.0f : 0.0f;
+  float y = top + huge + (roomy ? 56.0f : 46.0f);
   const float width = std::min(560.0f, W - 40.0f);
   const float menu_h = 9.0f * row_h + 8.0f * gap;  // eight rows and two half-row gaps
   ground(dl, cx, y - 12.0f, width + 60.0f, menu_h + 24.0f);
@@ -115,7 +116,7 @@ FrontAction draw_title(FrontEnd& fe, const HudFonts& f) {
       if (option) title_step(fe, item, dir < 0 ? -1 : +1);
       else chosen = title_choose(fe, item);
     }
-    row_label(dl, f, y, width, fe.title_cursor == r, rows[r]);
+    row_label(dl, f, y, width, row_h, fe.title_cursor == r, rows[r]);
     y += row_h + gap;
   }
   // What the row under the cursor does, and the keys.
@@ -149,7 +150,7 @@ FrontAction draw_pause_menu(FrontEnd& fe, const HudFonts& f) {
   for (int r = 0; r < static_cast<int>(PauseItem::Count); ++r) {
     if (menu_row(rows[r], y, 420.0f, large + 10.0f, r, fe.pause_cursor))
       chosen = pause_choose(fe, static_cast<PauseItem>(r));
-    row_label(dl, f, y, 420.0f, fe.pause_cursor == r, rows[r]);
+    row_label(dl, f, y, 420.0f, large + 10.0f, fe.pause_cursor == r, rows[r]);
     y += large + 20.0f;
   }
   hud_text(dl, f.medium, cx, H - 30.0f, 0.5f, kWhite, "Up / Down choose    Enter    Esc resume");
@@ -232,7 +233,7 @@ FrontAction draw_result(const BoutSummary& r, const HudFonts& f) {
   int cursor = 0;
   FrontAction chosen = FrontAction::None;
   if (menu_row("##back", y, 420.0f, size_of(f.large) + 10.0f, 0, cursor)) chosen = FrontAction::ToTitle;
-  row_label(dl, f, y, 420.0f, true, "BACK TO TITLE");
+  row_label(dl, f, y, 420.0f, size_of(f.large) + 10.0f, true, "BACK TO TITLE");
   hud_text(dl, f.medium, cx, H - 30.0f, 0.5f, kWhite, "Enter or Esc: back to the title");
   ImGui::End();
   return chosen;
