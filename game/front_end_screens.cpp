@@ -102,7 +102,7 @@ FrontAction draw_title(FrontEnd& fe, const HudFonts& f) {
                               "SEED   <  " + std::to_string(s.seed) + "  >",
                               "QUIT"};
   const float row_h = large + (roomy ? 10.0f : 4.0f), gap = roomy ? 6.0f : 0.0f;
-  float y = top + huge + (roomy ? 56.0f : 46.0f);
+  float y = top + huge + (roomy ? 56.0f : 52.0f);
   const float width = std::min(560.0f, W - 40.0f);
   const float menu_h = 9.0f * row_h + 8.0f * gap;  // eight rows and two half-row gaps
   ground(dl, cx, y - 12.0f, width + 60.0f, menu_h + 24.0f);
