@@ -148,7 +148,7 @@ eng::Result<void> write_recording(const Options& o, const World& w) {
   if (o.record.empty()) return {};
   auto ok = write_input_file(o.record, w.interaction->recorded);
   if (ok) std::printf("boxing: %zu input events recorded to %s (play back: --scenario %s --seed %llu --input %s)\n",
-                      w.interaction->recorded.size(), o.record.c_str(), o.scenario.c_str(),
+                      w.interaction->recorded.size(), o.record.c_str(), w.options.scenario.c_str(),
                       static_cast<unsigned long long>(w.options.seed), o.record.c_str());
   return ok;
 }
@@ -584,7 +584,7 @@ bool render_frame(WindowRun& s, const FrameInput& in) {
     fill_frame(w, s.view, s.f);
     s.f.camera = in.cam;
   }
-  s.f.overlay = s.ui_visible;
+  s.f.overlay = s.ui_visible || s.front.screen != Screen::Playing;  // --no-overlay hides no menu
   if (auto ok = s.r.render(s.f); !ok) {
     std::fprintf(stderr, "boxing: rendering failed: %s\n", ok.error().c_str());
     return false;

@@ -151,7 +151,8 @@ Check read_scenario(const std::string&, const std::string& v, Options& o) {
 // --ai LEVEL or LEVEL,LEVEL: one level for both boxers, or red's and blue's.
 Check read_ai(const std::string&, const std::string& v, Options& o) {
   const size_t comma = v.find(',');
-  const std::string levels[2] = {v.substr(0, comma), comma == std::string::npos ? v.substr(0, comma) : v.substr(comma + 1)};
+  const std::string red = v.substr(0, comma), blue = comma == std::string::npos ? red : v.substr(comma + 1);
+  const std::string levels[2] = {red, blue};
   for (const std::string& l : levels)
     if (l != "easy" && l != "normal" && l != "hard")
       return bad("--ai takes easy, normal or hard, or two of them for red and blue (e.g. easy,hard), got '" + v + "'");
