@@ -151,6 +151,12 @@ eng::Result<HeadlessRun> run_headless(const Options& o) {
   auto world = make_world(o);
   if (!world) return eng::make_error(world.error());
   World& w = **world;
+  std::unique_ptr<GameAudio> audio;  // --audio-out: the mix to a WAV (headless never opens an audio device)
+  if (!o.audio_out.empty()) {
+    auto a = make_game_audio({o.audio_out, false, {}});
+    if (!a) return eng::make_error(a.error());
+    audio = std::move(*a);
+  }
   auto renderer = eng::render::Renderer::create_headless(renderer_config(o));
   if (!renderer) return eng::make_error("boxing: " + renderer.error());
   eng::render::Renderer& r = **renderer;
@@ -164,13 +170,7 @@ eng::Result<HeadlessRun> run_headless(const Options& o) {
   RunTimes times;
   FrameTimes &sim = times.sim, &render = times.render;
   HeadlessRun out;
-  std::unique_ptr<GameAudio> audio;  // --audio-out: the mix to a WAV (headless never opens an audio device)
-  if (!o.audio_out.empty()) {
-    auto a = make_game_audio({o.audio_out, false, {}});
-    if (!a) return eng::make_error(a.error());
-    audio = std::move(*a);
-    game_audio_listen(*audio, f.camera);
-  }
+  if (audio) game_audio_listen(*audio, f.camera);
   for (long frame = 1; frame <= frames; ++frame) {
     const auto t0 = clock_type::now();
     for (int s = 0; s < kStepsPerFrame; ++s) step_world(w);
