@@ -25,8 +25,8 @@ constexpr int kBuffers = 16;    // enough that the queue's length in time, not i
 constexpr int kStartAfter = 2;  // buffers waiting before (re)starting the source: a frame of slack against jitter
 // s of sound queued at most: past it a span's oldest frames are dropped (the game ran ahead of the device, as in the
 // catch-up after a slow frame, and the latency would stay that high). The trade: the sound's latency is the mixer's
-// lag (62 ms) plus what is queued; a frame slower than what is queued empties the queue, a gap (docs/audio.md
-// measures both in the window under lavapipe).
+// lag (62 ms) plus what is queued; a frame slower than what is queued empties the queue, a gap (both measured in the
+// window under lavapipe: docs/guide/audio.md).
 constexpr double kMaxQueued = 0.15;
 
 // The default device, opened with stderr quiet: OpenAL Soft's backends and the ALSA library below them print their

@@ -11,7 +11,8 @@ namespace {
 
 constexpr double kTailFade = 0.005;  // s: the last samples of an impact fade to zero (no click where it is cut)
 
-// The recipe's noise burst added into out.
+// The recipe's noise burst added into out. The decay is a per-sample factor (e^(-1 / (decay_s rate)), exact for the
+// exponential) rather than an exp() a sample: the bank is made at every start.
 void add_noise_burst(const NoiseBurst& nb, uint64_t seed, std::vector<double>& out) {
   if (nb.gain <= 0.0) return;
   NoiseRng rng{seed};
@@ -20,26 +21,43 @@ void add_noise_burst(const NoiseBurst& nb, uint64_t seed, std::vector<double>& o
     if (nb.highpass_hz > 0.0) filters.push_back(highpass(nb.highpass_hz, M_SQRT1_2, kSampleRate));
     if (nb.lowpass_hz > 0.0) filters.push_back(lowpass(nb.lowpass_hz, M_SQRT1_2, kSampleRate));
   }
-  for (size_t i = 0; i < out.size(); ++i) {
-    const double t = double(i) / kSampleRate;
+  const size_t attack = static_cast<size_t>(std::max(nb.attack_s, 1e-6) * kSampleRate);
+  const double fall = std::exp(-1.0 / (nb.decay_s * kSampleRate));
+  double env = 1.0;
+  for (size_t i = 0; i < out.size() && env > 1e-6; ++i) {  // to -120 dB: below the 16-bit floor
     double x = rng.next();
     for (Biquad& f : filters) x = f.process(x);
-    const double env = std::min(1.0, t / std::max(nb.attack_s, 1e-6)) * std::exp(-std::max(0.0, t - nb.attack_s) / nb.decay_s);
-    out[i] += nb.gain * env * x;
+    const double rise = i < attack ? double(i) / double(attack) : 1.0;
+    out[i] += nb.gain * rise * env * x;
+    if (i >= attack) env *= fall;
   }
 }
 
-// The damped modes added into out (phase integrated sample by sample: the frequency may glide).
+// The damped modes added into out. A steady mode is a rotating phasor (z <- z e^(i w) each sample) under a decaying
+// envelope (a per-sample factor): no sin() or exp() a sample. A gliding mode integrates its phase sample by sample.
 void add_modes(const ImpactRecipe& r, std::vector<double>& out) {
+  const double attack = std::max(r.mode_attack_s, 1e-6) * kSampleRate;
   for (const Mode& m : r.modes) {
-    double phase = 0.0;
+    const double fall = std::exp(-1.0 / (m.decay_s * kSampleRate));
+    double env = m.gain;
+    if (m.glide_to_hz <= 0.0) {
+      const double w = 2.0 * M_PI * m.freq_hz / kSampleRate, cw = std::cos(w), sw = std::sin(w);
+      double re = 1.0, im = 0.0;  // e^(i phase), phase 0 at the start (sin starts at 0: no click)
+      for (size_t i = 0; i < out.size(); ++i) {
+        out[i] += std::min(1.0, double(i) / attack) * env * im;
+        const double nre = re * cw - im * sw;
+        im = re * sw + im * cw, re = nre;
+        env *= fall;
+      }
+      continue;
+    }
+    const double glide = std::exp(-1.0 / (m.glide_s * kSampleRate));
+    double phase = 0.0, excess = m.freq_hz - m.glide_to_hz;  // the frequency above where it glides to, Hz
     for (size_t i = 0; i < out.size(); ++i) {
-      const double t = double(i) / kSampleRate;
-      const double f = m.glide_to_hz > 0.0 ? m.glide_to_hz + (m.freq_hz - m.glide_to_hz) * std::exp(-t / m.glide_s)
-                                           : m.freq_hz;
-      const double env = std::min(1.0, t / std::max(r.mode_attack_s, 1e-6)) * std::exp(-t / m.decay_s);
-      out[i] += m.gain * env * std::sin(phase);
-      phase += 2.0 * M_PI * f / kSampleRate;
+      out[i] += std::min(1.0, double(i) / attack) * env * std::sin(phase);
+      phase += 2.0 * M_PI * (m.glide_to_hz + excess) / kSampleRate;
+      excess *= glide;
+      env *= fall;
     }
   }
 }
@@ -80,11 +98,13 @@ SoundBuffer synth_noise_bed(const NoiseBedRecipe& r) {
     const BedLayer& layer = r.layers[l];
     NoiseRng rng{r.seed + 0x1000u * (l + 1)};
     Biquad bp = bandpass(layer.centre_hz, layer.q, kSampleRate), bp2 = bp;  // two stages: a clearer band
-    const double phase = M_PI * (phases.next() + 1.0);
+    const double phase = M_PI * (phases.next() + 1.0), w = 2.0 * M_PI * layer.swell_hz / kSampleRate;
+    double re = std::cos(phase), im = std::sin(phase);  // the swell's phasor (rotated each sample, no sin() a sample)
+    const double cw = std::cos(w), sw = std::sin(w);
     for (size_t i = 0; i < acc.size(); ++i) {
-      const double t = double(i) / kSampleRate;
-      const double swell = 1.0 + layer.swell_depth * std::sin(2.0 * M_PI * layer.swell_hz * t + phase);
-      acc[i] += layer.gain * swell * bp2.process(bp.process(rng.next()));
+      acc[i] += layer.gain * (1.0 + layer.swell_depth * im) * bp2.process(bp.process(rng.next()));
+      const double nre = re * cw - im * sw;
+      im = re * sw + im * cw, re = nre;
     }
   }
   // Equal-power crossfade of the tail [n, n + xf) into the head [0, xf): the loop's end meets its start.

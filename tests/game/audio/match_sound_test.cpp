@@ -11,7 +11,7 @@
 // its way in) or sits on the crowd's bed (300 Hz-2 kHz), and a whole-band detector measured those instead (7 of 84
 // punches missed on seeds 1-5, 60 s, crowd off; 25 with the crowd); the knock's band alone missed a punch landing 25 ms
 // after the other boxer's (the first knock still ringing), the burst's band alone the punches behind slaps. The two
-// together missed one of the 84, a landed punch the solver gave no impulse (docs/audio.md).
+// together missed one of the 84, a landed punch the solver gave no impulse (docs/guide/audio.md).
 #include <gtest/gtest.h>
 
 #include <algorithm>
