@@ -102,7 +102,8 @@ void collect_landed_punches(const World& w, SoundEventLog& log) {
       const bool ba = b.boxer == k && is(b, BodyPart::Glove) && a.boxer == 1 - k;
       if ((ab || ba) && h.approach_speed > fastest) fastest = h.approach_speed, log.landing_at[k] = h.point;
     }
-    if (fastest < 0.0) log.landing_at[k] = w.data.com_world[w.boxers[1 - k].bodies.body[mt.bones.head]];
+    if (fastest < 0.0 && mt.bones.head >= 0)  // (a landing is decided by such a hit: a fallback, the opponent's head)
+      log.landing_at[k] = w.data.com_world[w.boxers[1 - k].bodies.body[mt.bones.head]];
   }
 }
 
