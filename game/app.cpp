@@ -16,6 +16,7 @@
 #include "engine/platform/window.h"
 #include "engine/render/renderer.h"
 #include "engine/ui/ui.h"
+#include "game/audio/game_audio.h"
 #include "game/control_panel.h"
 #include "game/front_end.h"
 #include "game/front_end_screens.h"
@@ -159,6 +160,12 @@ eng::Result<HeadlessRun> run_headless(const Options& o) {
   auto world = make_world(o);
   if (!world) return eng::make_error(world.error());
   World& w = **world;
+  std::unique_ptr<GameAudio> audio;  // --audio-out: the mix to a WAV (headless never opens an audio device)
+  if (!o.audio_out.empty()) {
+    auto a = make_game_audio({o.audio_out, false, {}});
+    if (!a) return eng::make_error(a.error());
+    audio = std::move(*a);
+  }
   auto renderer = eng::render::Renderer::create_headless(renderer_config(o));
   if (!renderer) return eng::make_error("boxing: " + renderer.error());
   eng::render::Renderer& r = **renderer;
@@ -172,10 +179,13 @@ eng::Result<HeadlessRun> run_headless(const Options& o) {
   RunTimes times;
   FrameTimes &sim = times.sim, &render = times.render;
   HeadlessRun out;
+  if (audio) game_audio_listen(*audio, f.camera);
   for (long frame = 1; frame <= frames; ++frame) {
     const auto t0 = clock_type::now();
     for (int s = 0; s < kStepsPerFrame; ++s) step_world(w);
     sim.ms.push_back(std::chrono::duration<double, std::milli>(clock_type::now() - t0).count());
+    if (audio)
+      if (auto ok = game_audio_update(*audio, w); !ok) return eng::make_error(ok.error());
     const bool last = frame == frames;
     const bool every = o.render_every > 0 && frame % o.render_every == 0;
     if (!last && !every) continue;
@@ -207,6 +217,10 @@ eng::Result<HeadlessRun> run_headless(const Options& o) {
     if (last) out.image = std::move(*img);
   }
   out.report = base_report(o, w, frames, r, times, true);
+  if (audio) {
+    if (auto ok = game_audio_finish(*audio, w); !ok) return eng::make_error(ok.error());
+    out.report["audio"] = game_audio_report(*audio);
+  }
   out.driver = r.device_name() + " / " + r.driver_info();
   out.validation_errors = r.validation_errors();
   out.validation_active = r.validation_active();
@@ -627,6 +641,16 @@ void update_title(WindowRun& s) {
   s.title = std::move(t);
 }
 
+// The frame's sound: the listener at the camera, the slow motion's speed, the world's new events mixed and played
+// (the device, and --audio-out). False (said) when the WAV cannot be written.
+bool feed_audio(GameAudio& a, WindowRun& s, const FrameInput& in) {
+  game_audio_listen(a, in.cam);
+  game_audio_speed(a, time_scale(s.panel));
+  auto ok = game_audio_update(a, *s.world);
+  if (!ok) std::fprintf(stderr, "%s\n", ok.error().c_str());
+  return ok.ok();
+}
+
 // After the window closes: the report, the recording, and the exit code (1 on a validation error).
 int finish_windowed(WindowRun& s) {
   World& w = *s.world;
@@ -680,6 +704,11 @@ int run_windowed(const Options& o) {
   }
   WindowRun s(o, world, **window, **renderer);
   s.title = wc.title;
+  auto audio = make_game_audio({o.audio_out, true, {}});  // the device (or silent, said once) and --audio-out
+  if (!audio) {
+    std::fprintf(stderr, "%s\n", audio.error().c_str());
+    return 1;
+  }
   while (!s.win.should_close()) {
     restart_if_asked(s);
     s.win.poll_events();
@@ -687,12 +716,17 @@ int run_windowed(const Options& o) {
     handle_keys(s, in);
     handle_mouse(s, in);
     step_simulation(s);
+    if (!feed_audio(**audio, s, in)) return 1;
     watch_for_replay(s);
     draw_panels(s);
     update_title(s);
     if (s.win.minimized()) continue;
     if (!render_frame(s, in)) return 1;
     save_screenshot_if_asked(s);
+  }
+  if (auto ok = game_audio_finish(**audio, *s.world); !ok) {
+    std::fprintf(stderr, "%s\n", ok.error().c_str());
+    return 1;
   }
   return finish_windowed(s);
 }

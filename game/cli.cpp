@@ -134,6 +134,13 @@ Check read_screenshot(const std::string& flag, const std::string& v, Options& o)
   return std::nullopt;
 }
 
+Check read_audio_out(const std::string& flag, const std::string& v, Options& o) {
+  if (v.empty()) return missing(flag);
+  if (v.size() < 4 || v.substr(v.size() - 4) != ".wav") return bad("--audio-out needs a .wav file name, got '" + v + "'");
+  o.audio_out = v;
+  return std::nullopt;
+}
+
 Check read_seed(const std::string&, const std::string& v, Options& o) {
   if (!parse_u64(v, o.seed)) return bad("--seed must be a non-negative integer, got '" + v + "'");
   return std::nullopt;
@@ -216,6 +223,8 @@ const std::vector<Flag> kFlags = {
     {{"--screenshot"}, "FILE.png", read_screenshot, "write the last frame"},
     {{"--report"}, "FILE.json", path(&Options::report),
      "write what ran: seed, seconds, frames, device, frame times, scenario results"},
+    {{"--audio-out"}, "FILE.wav", read_audio_out,
+     "write the game's sound (16-bit stereo 48 kHz, simulation time), headless too"},
     {{"--content"}, "DIR", path(&Options::content_dir), "the content folder (default: the repository's content/)"},
     {{"--frames-dir"}, "DIR", path(&Options::frames_dir), "headless: write each rendered frame as DIR/frame_NNNNN.png"},
     {{"--render-every"}, "N", integer(&Options::render_every, 0, 1000000, "a non-negative integer"),

@@ -31,6 +31,7 @@ struct Options {
   std::string camera = "default";      // default | closeup | side | top
   std::string screenshot;              // PNG of the last frame
   std::string report;                  // JSON report
+  std::string audio_out;               // --audio-out FILE.wav: the mixed sound (game/audio/game_audio.h)
   std::string content_dir;             // where content/ lives (default: the source tree's content/)
   std::string frames_dir;              // headless: write every rendered frame here as PNG
   int render_every = 0;                // headless: render every Nth display frame (0 = only the last)

@@ -115,7 +115,8 @@ nlohmann::json match_report(const World& w) {
                       {"opening_m", e.opening},
                       {"consciousness", e.consciousness},
                       {"impulse", e.impulse},
-                      {"damage", e.damage}});
+                      {"damage", e.damage},
+                      {"landed_at", e.landed ? nlohmann::json(e.landed_at) : nlohmann::json(nullptr)}});
   nlohmann::json getups = nlohmann::json::array();
   for (const GetUp& g : mt.getups)
     getups.push_back({{"boxer", g.boxer},

@@ -28,7 +28,7 @@ TEST(Cli, ParsesEveryValueFlag) {
                       "--scenario", "push", "--screenshot", "a.png", "--report", "r.json", "--servo",
                       "parent-meathook", "--push-dir", "90", "--push-force", "150", "--push-duration", "0.1",
                       "--push-at", "3", "--push-shape", "sine", "--camera", "closeup", "--ghost", "--render-every", "30", "--root-spring",
-                      "on", "--root-spring-max", "80"});
+                      "on", "--root-spring-max", "80", "--audio-out", "out/m.wav"});
   ASSERT_TRUE(o.ok()) << o.error();
   EXPECT_TRUE(o->headless);
   EXPECT_EQ(o->width, 640);
@@ -38,6 +38,7 @@ TEST(Cli, ParsesEveryValueFlag) {
   EXPECT_EQ(o->scenario, "push");
   EXPECT_EQ(o->screenshot, "a.png");
   EXPECT_EQ(o->report, "r.json");
+  EXPECT_EQ(o->audio_out, "out/m.wav");
   EXPECT_EQ(o->servo, "parent-meathook");
   EXPECT_DOUBLE_EQ(o->push_dir_deg, 90.0);
   EXPECT_DOUBLE_EQ(o->push_force, 150.0);
@@ -76,6 +77,8 @@ TEST(Cli, RejectsBadFlagsAndValuesWithOneLine) {
       {{"--scenario", "tennis"}, "tennis"},
       {{"--servo", "magic"}, "magic"},
       {{"--screenshot", "a.jpg"}, ".png"},
+      {{"--audio-out", "a.mp3"}, ".wav"},
+      {{"--audio-out"}, "--audio-out"},
       {{"--headless=yes"}, "--headless"},
       {{"--dot", "g.dot"}, "--dot"},
       {{"--root-spring", "maybe"}, "--root-spring"},
