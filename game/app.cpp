@@ -10,12 +10,16 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 
 #include "engine/physics/dynamics.h"
 #include "engine/platform/window.h"
 #include "engine/render/renderer.h"
 #include "engine/ui/ui.h"
+#include "game/audio/game_audio.h"
 #include "game/control_panel.h"
+#include "game/front_end.h"
+#include "game/front_end_screens.h"
 #include "game/hud.h"
 #include "game/interaction/mouse_hands.h"
 #include "game/match/match.h"
@@ -65,6 +69,12 @@ struct FrameTimes {
   }
 };
 
+// The display face's sizes the HUD and the screens draw with (engine/ui/ui.h).
+HudFonts hud_fonts(const eng::ui::Ui& ui) {
+  return {eng::ui::ui_font(ui, eng::ui::Font::Medium), eng::ui::ui_font(ui, eng::ui::Font::Large),
+          eng::ui::ui_font(ui, eng::ui::Font::Huge)};
+}
+
 eng::render::RendererConfig renderer_config(const Options& o) {
   eng::render::RendererConfig c;
   c.width = o.width;
@@ -91,7 +101,7 @@ struct RunTimes {
 nlohmann::json base_report(const Options& o, const World& w, long frames, const eng::render::Renderer& r,
                            const RunTimes& t, bool headless) {
   nlohmann::json j = world_report(w);
-  j["seed"] = o.seed;
+  j["seed"] = w.options.seed;  // the world's: in the window the title's start may change it
   j["seconds"] = w.data.time;
   j["frames"] = frames;
   j["headless"] = headless;
@@ -139,7 +149,7 @@ eng::Result<void> write_recording(const Options& o, const World& w) {
   if (o.record.empty()) return {};
   auto ok = write_input_file(o.record, w.interaction->recorded);
   if (ok) std::printf("boxing: %zu input events recorded to %s (play back: --scenario %s --seed %llu --input %s)\n",
-                      w.interaction->recorded.size(), o.record.c_str(), o.scenario.c_str(),
+                      w.interaction->recorded.size(), o.record.c_str(), w.options.scenario.c_str(),
                       static_cast<unsigned long long>(w.options.seed), o.record.c_str());
   return ok;
 }
@@ -150,6 +160,12 @@ eng::Result<HeadlessRun> run_headless(const Options& o) {
   auto world = make_world(o);
   if (!world) return eng::make_error(world.error());
   World& w = **world;
+  std::unique_ptr<GameAudio> audio;  // --audio-out: the mix to a WAV (headless never opens an audio device)
+  if (!o.audio_out.empty()) {
+    auto a = make_game_audio({o.audio_out, false, {}});
+    if (!a) return eng::make_error(a.error());
+    audio = std::move(*a);
+  }
   auto renderer = eng::render::Renderer::create_headless(renderer_config(o));
   if (!renderer) return eng::make_error("boxing: " + renderer.error());
   eng::render::Renderer& r = **renderer;
@@ -163,10 +179,13 @@ eng::Result<HeadlessRun> run_headless(const Options& o) {
   RunTimes times;
   FrameTimes &sim = times.sim, &render = times.render;
   HeadlessRun out;
+  if (audio) game_audio_listen(*audio, f.camera);
   for (long frame = 1; frame <= frames; ++frame) {
     const auto t0 = clock_type::now();
     for (int s = 0; s < kStepsPerFrame; ++s) step_world(w);
     sim.ms.push_back(std::chrono::duration<double, std::milli>(clock_type::now() - t0).count());
+    if (audio)
+      if (auto ok = game_audio_update(*audio, w); !ok) return eng::make_error(ok.error());
     const bool last = frame == frames;
     const bool every = o.render_every > 0 && frame % o.render_every == 0;
     if (!last && !every) continue;
@@ -179,8 +198,9 @@ eng::Result<HeadlessRun> run_headless(const Options& o) {
       in.display_height = float(o.height);
       eng::ui::ui_begin(r.ui(), in);
       draw_stats_panel({float(sim.ms.back()), r.device_name(),
-                        {"t = " + std::to_string(w.data.time) + " s", "scenario " + o.scenario}});
-      if (w.match->active) draw_match_panel(match_hud(w));
+                        {"t = " + std::to_string(w.data.time) + " s", "scenario " + o.scenario},
+                        w.match->active ? 130.0f : 10.0f});  // below the HUD's name plates
+      if (w.match->active) draw_broadcast_hud(match_hud(w), hud_fonts(r.ui()));
       eng::ui::ui_end(r.ui());
     }
     if (auto ok = r.render(f); !ok) return eng::make_error("boxing: rendering failed: " + ok.error());
@@ -197,6 +217,10 @@ eng::Result<HeadlessRun> run_headless(const Options& o) {
     if (last) out.image = std::move(*img);
   }
   out.report = base_report(o, w, frames, r, times, true);
+  if (audio) {
+    if (auto ok = game_audio_finish(*audio, w); !ok) return eng::make_error(ok.error());
+    out.report["audio"] = game_audio_report(*audio);
+  }
   out.driver = r.device_name() + " / " + r.driver_info();
   out.validation_errors = r.validation_errors();
   out.validation_active = r.validation_active();
@@ -254,8 +278,12 @@ struct WindowRun {
   eng::render::FrameDesc f;
   OrbitCamera orbit;
   int camera_index = 0;
-  bool overlay = true;
+  bool overlay = false;  // H: the debug overlay (frame time, device, time scale, seed); --overlay starts with it
+  bool ui_visible = true;  // the HUD and the screens (--no-overlay: none, a clean picture)
   PanelState panel;
+  FrontEnd front;        // the screens: title, playing, paused, result (front_end.h)
+  std::string title;     // the window's title now
+  std::vector<std::string> log;  // what the keys and menus did, in order (the report's front_end.log; tests read it)
   MouseHands hands;
   bool left_was_down = false;
   RunTimes times;
@@ -273,7 +301,10 @@ struct WindowRun {
     for (int i = 0; i < 4; ++i)
       if (o.camera == kCameras[i]) camera_index = i;
     orbit.from(camera_preset(kCameras[camera_index], *world));
-    overlay = o.overlay_given ? o.overlay : true;
+    overlay = o.overlay_given && o.overlay;
+    ui_visible = !o.overlay_given || o.overlay;
+    panel.open = false;  // the physics panel: Tab opens and closes it
+    front = front_end_for(o);
     panel.seed = int(o.seed);
     panel.slow = o.slow == 2 ? 1 : o.slow == 4 ? 2 : o.slow == 10 ? 3 : 0;
     last_sim = clock_type::now();
@@ -286,31 +317,12 @@ struct WindowRun {
 struct FrameInput {
   eng::ui::UiInput uin;
   float ui_dt = 0.0f;  // s since the last UI frame
-  bool ui_mouse = false, ui_keys = false;  // the mouse / the keys belong to a panel
+  bool ui_mouse = false;  // the mouse belongs to a panel or a screen
+  bool ui_text = false;   // a clicked text field is being edited: the keys are its own
   eng::render::Camera cam;
   bool mouse_in = false;  // the cursor is over the window
   CameraRay ray;
 };
-
-// The panel's restart: a new world with the panel's seed (the recording starts again with it); the view keeps its
-// ghost and debug drawing.
-void restart_if_asked(WindowRun& s) {
-  if (!s.panel.restart) return;
-  s.panel.restart = false;
-  Options ro = s.world->options;
-  ro.seed = uint64_t(s.panel.seed);
-  auto again = make_world(ro);
-  if (!again) {
-    std::fprintf(stderr, "%s\n", again.error().c_str());
-    return;
-  }
-  s.world = std::move(*again);
-  SceneView v = make_scene_view(*s.world, s.r);
-  v.ghost = s.view.ghost, v.debug = s.view.debug;
-  s.view = std::move(v);
-  s.hands = MouseHands{};
-  s.replay = {};
-}
 
 // The UI frame opens first: it says whether this frame's mouse and keys belong to a panel or to the scene; the
 // panels are built after the simulation (they show its time) and the frame ends before rendering.
@@ -320,22 +332,99 @@ FrameInput begin_ui_frame(WindowRun& s) {
   in.ui_dt = std::max(1e-4f, std::chrono::duration<float>(ui_now - s.last_ui).count());
   s.last_ui = ui_now;
   in.uin = s.win.ui_input(in.ui_dt);
+  // Tab is the game's (the panel's toggle), never ImGui's: with a panel focused, ImGui's Tab moved the focus into
+  // its next field (a slider turned text field), which then held the keyboard.
+  in.uin.key_down[static_cast<int>(eng::ui::Key::Tab)] = false;
   eng::ui::ui_begin(s.r.ui(), in.uin);
   in.ui_mouse = eng::ui::ui_wants_mouse(s.r.ui());
-  in.ui_keys = eng::ui::ui_wants_keyboard(s.r.ui());
+  // The keys are the game's unless a text field the player clicked is being edited (io.WantTextInput). Not
+  // io.WantCaptureKeyboard: it is true whenever any widget is active (ImGui 1.86: ActiveId != 0), a text field that
+  // Tab had focused included, and the game's keys then went nowhere.
+  in.ui_text = eng::ui::ui_wants_text(s.r.ui());
+  if (s.front.screen == Screen::Title) s.orbit.yaw += 0.05f * in.ui_dt;  // the title's camera circles the ring slowly
   in.cam = s.orbit.to(camera_preset(kCameras[s.camera_index], *s.world));
   in.mouse_in = in.uin.mouse_x > -1e30f;
   in.ray = camera_ray(in.cam, in.uin.mouse_x, in.uin.mouse_y, in.uin.display_width, in.uin.display_height);
   return in;
 }
 
-// The keys, unless a panel has the keyboard: quit, overlay, ghost, camera, the fight keys, throws, the panel's keys.
+// A new world for `options` (a mode started from the title, a restart): the view keeps its ghost and debug drawing,
+// the camera its preset; the hands, the replay and the time accumulated start again.
+void start_world(WindowRun& s, const Options& options) {
+  auto made = make_world(options);
+  if (!made) {
+    std::fprintf(stderr, "%s\n", made.error().c_str());
+    return;
+  }
+  s.world = std::move(*made);
+  SceneView v = make_scene_view(*s.world, s.r);
+  v.ghost = s.view.ghost, v.debug = s.view.debug;
+  s.view = std::move(v);
+  s.hands = MouseHands{};
+  s.replay = {};
+  s.accumulator = 0.0;
+  s.panel.seed = int(options.seed);
+}
+
+// The panel's restart (F5, its button): a new world with the panel's seed (the recording starts again with it).
+void restart_if_asked(WindowRun& s) {
+  if (!s.panel.restart) return;
+  s.panel.restart = false;
+  Options ro = s.world->options;
+  ro.seed = uint64_t(s.panel.seed);
+  start_world(s, ro);
+}
+
+// What a menu chose (front_end.h), carried out: a mode started or restarted (a new world), the title, quit.
+void carry_out(WindowRun& s, FrontAction a) {
+  if (a == FrontAction::None) return;
+  const Screen was = s.front.screen;
+  front_end_apply(s.front, a);
+  if (a == FrontAction::Start || a == FrontAction::Restart) s.panel.paused = false;
+  if (a == FrontAction::Start) {
+    start_world(s, options_for(s.o, s.front.settings));
+    s.orbit.from(camera_preset(kCameras[s.camera_index], *s.world));
+    s.log.push_back(std::string("start ") + mode_name(s.front.settings.mode));
+  } else if (a == FrontAction::Restart) {
+    start_world(s, s.world->options);
+    s.log.push_back("restart");
+  } else if (a == FrontAction::Quit) {
+    s.win.request_close();
+    s.log.push_back("quit");
+  } else if (s.front.screen != was) {
+    s.log.push_back(screen_name(s.front.screen));
+  }
+}
+
+// The menus' keys on the title, the pause menu and the result; Esc while playing opens the pause menu.
+void handle_menu_keys(WindowRun& s) {
+  constexpr std::pair<int, MenuKey> kMenuKeys[] = {
+      {GLFW_KEY_UP, MenuKey::Up},       {GLFW_KEY_DOWN, MenuKey::Down},      {GLFW_KEY_LEFT, MenuKey::Left},
+      {GLFW_KEY_RIGHT, MenuKey::Right}, {GLFW_KEY_ENTER, MenuKey::Enter},    {GLFW_KEY_KP_ENTER, MenuKey::Enter},
+      {GLFW_KEY_SPACE, MenuKey::Enter}, {GLFW_KEY_ESCAPE, MenuKey::Back}};
+  for (const int pressed : s.win.keys_pressed())  // in order: two quick Downs move the cursor two rows
+    for (const auto& [key, menu_key] : kMenuKeys) {
+      if (key != pressed) continue;
+      if (s.front.screen == Screen::Playing && menu_key != MenuKey::Back) continue;  // the arrows are not the game's
+      const Screen was = s.front.screen;
+      const FrontAction a = front_end_key(s.front, menu_key);
+      if (s.front.screen != was) s.log.push_back(screen_name(s.front.screen));
+      carry_out(s, a);
+    }
+}
+
+// The keys, unless a text field the player clicked has them: the menus'; then, playing, the debug overlay, the ghost,
+// the camera, the fight keys, throws and the panel's keys (Tab the panel, P pause, ...).
 void handle_keys(WindowRun& s, const FrameInput& in) {
-  if (in.ui_keys) return;
+  if (in.ui_text) return;
+  handle_menu_keys(s);  // may start a new world
+  if (s.front.screen != Screen::Playing) return;
   World& w = *s.world;
   eng::platform::Window& win = s.win;
-  if (win.key_pressed(GLFW_KEY_ESCAPE)) win.request_close();
-  if (win.key_pressed(GLFW_KEY_H)) s.overlay = !s.overlay;
+  if (win.key_pressed(GLFW_KEY_H)) {
+    s.overlay = !s.overlay;
+    s.log.push_back(s.overlay ? "debug overlay on" : "debug overlay off");
+  }
   if (win.key_pressed(GLFW_KEY_G)) s.view.ghost = !s.view.ghost;
   if (win.key_pressed(GLFW_KEY_C)) {
     s.camera_index = (s.camera_index + 1) % 4;
@@ -348,7 +437,7 @@ void handle_keys(WindowRun& s, const FrameInput& in) {
         InputEvent e;
         e.kind = InputKind::Key;
         e.action = action;
-        e.boxer = s.o.player >= 0 ? s.o.player : 0;
+        e.boxer = w.options.player >= 0 ? w.options.player : 0;
         interaction_submit(w, e);
       }
   // Throws from the camera toward the cursor; Backspace clears them.
@@ -359,9 +448,14 @@ void handle_keys(WindowRun& s, const FrameInput& in) {
     e.kind = InputKind::Clear;
     interaction_submit(w, e);
   }
+  const PanelState before = s.panel;
   handle_panel_keys(w, s.view, s.panel,
                     {[](const void* c, int k) { return static_cast<const eng::platform::Window*>(c)->key_pressed(k); },
                      &win});
+  if (s.panel.open != before.open) s.log.push_back(s.panel.open ? "panel open" : "panel closed");
+  if (s.panel.paused != before.paused) s.log.push_back(s.panel.paused ? "physics paused" : "physics running");
+  if (s.panel.step_once && !before.step_once) s.log.push_back("one frame");
+  if (s.panel.slow != before.slow) s.log.push_back(std::string("time ") + time_scale_name(s.panel));
 }
 
 // The mouse: the left button grabs what is under the cursor, drags it and lets go (the panel keeps its own clicks);
@@ -402,7 +496,10 @@ void step_simulation(WindowRun& s) {
   s.accumulator =
       std::min(s.accumulator + time_scale(s.panel) * std::chrono::duration<double>(now - s.last_sim).count(), kMaxCatchUp);
   s.last_sim = now;
-  if (s.replay.active || s.panel.paused) s.accumulator = 0.0;
+  // Off the fight (the title, the pause menu, the result) the simulation waits, as it does paused or in a replay.
+  const bool playing = s.front.screen == Screen::Playing;
+  if (!playing) s.panel.step_once = false;
+  if (s.replay.active || s.panel.paused || !playing) s.accumulator = 0.0;
   if (s.panel.step_once && !s.replay.active) s.accumulator = 1.0 / 60.0, s.panel.step_once = false;
   while (s.accumulator >= 1.0 / 60.0) {
     const auto t0 = clock_type::now();
@@ -415,10 +512,13 @@ void step_simulation(WindowRun& s) {
 }
 
 // A knockdown in the match schedules the instant replay a second later; it starts once the replay buffer has
-// frames, from the live coordinates kept in live_q.
+// frames, from the live coordinates kept in live_q. The bout over, the result screen opens a little later.
 void watch_for_replay(WindowRun& s) {
   World& w = *s.world;
   if (!w.match->active) return;
+  const Screen was = s.front.screen;
+  front_end_watch_bout(s.front, w.match->over && !s.replay.active, w.data.time);
+  if (s.front.screen != was) s.log.push_back(screen_name(s.front.screen));
   Replay& replay = s.replay;
   const int kd = w.match->fighter[0].knockdowns + w.match->fighter[1].knockdowns;
   if (kd > replay.knockdowns && !replay.active) replay.pending = w.data.time + 1.0, replay.from = w.data.time - 1.5;
@@ -432,27 +532,50 @@ void watch_for_replay(WindowRun& s) {
   }
 }
 
-// The HUD and the panels (with the overlay on), then the UI frame ends.
+// The key hints along the bottom while playing: what a newcomer needs to find the menu, the panel and the fight.
+std::string key_hints(const World& w) {
+  std::string line = "Esc menu   Tab physics panel   H debug";
+  if (w.match->active && w.options.player >= 0) line += "   J jab  K cross  U/I hooks  N/M uppercuts  B block";
+  else if (!w.match->active) line += "   left-drag grab   T ball   Y crate   C camera";
+  else line += "   C camera";
+  return line;
+}
+
+// The screen's UI: the broadcast HUD while a match shows (the fight, the pause menu and the result over it), the
+// debug overlay (H) and the physics panel (Tab) while playing, the title, the pause menu or the result; then the UI
+// frame ends. The chosen menu action is carried out after the frame.
 void draw_panels(WindowRun& s) {
   World& w = *s.world;
-  if (s.overlay) {
+  const HudFonts fonts = hud_fonts(s.r.ui());
+  const bool playing = s.front.screen == Screen::Playing;
+  if (w.match->active && s.front.screen != Screen::Title) {
+    MatchHud hud = match_hud(w);
+    if (s.replay.active) hud.banner = hud.cards = "REPLAY";
+    if (w.options.mode == "versus") hud.side[0].tag = "PLAYER 1", hud.side[1].tag = "PLAYER 2: NOT YET (AI)";
+    if (s.front.screen != Screen::Result) draw_broadcast_hud(hud, fonts);
+  }
+  if (playing && s.overlay) {
     char status[160];
     std::snprintf(status, sizeof status, "t = %.2f s  %s  scenario %s  seed %llu", w.data.time,
-                  s.panel.paused ? "PAUSED" : time_scale_name(s.panel), s.o.scenario.c_str(),
+                  s.panel.paused ? "PAUSED" : time_scale_name(s.panel), w.options.scenario.c_str(),
                   static_cast<unsigned long long>(w.options.seed));
-    // Narrow enough to clear the match panel at 1280 px; the other keys are listed in the control panel.
-    // The HUD shows the frame as the player gets it: from one shown frame to the next.
+    // Below the HUD's name plates. The HUD shows the frame as the player gets it: from one shown frame to the next.
     HudStats stats{s.times.frame.ms.empty() ? 0.0f : float(s.times.frame.ms.back()), s.r.device_name(),
-                   {status, "F12 shot  H overlay  C camera  Tab panel  Esc quit"}};
+                   {status, "F12 shot  H debug  C camera  Tab panel  Esc menu"}};
+    stats.top = 130.0f;
     draw_stats_panel(stats);
+  }
+  if (playing && s.panel.open) {
     draw_control_panel(w, s.view, s.panel);
+    if (!s.panel.open) s.log.push_back("panel closed");  // its title bar's arrow
   }
-  if (s.overlay && w.match->active) {
-    MatchHud hud = match_hud(w);
-    if (s.replay.active) hud.banner = "REPLAY";
-    draw_match_panel(hud);
-  }
+  if (playing) draw_key_hints(key_hints(w), fonts.medium);
+  FrontAction chosen = FrontAction::None;
+  if (s.front.screen == Screen::Title) chosen = draw_title(s.front, fonts);
+  if (s.front.screen == Screen::Paused) chosen = draw_pause_menu(s.front, fonts);
+  if (s.front.screen == Screen::Result && w.match->active) chosen = draw_result(bout_summary(w), fonts);
   eng::ui::ui_end(s.r.ui());
+  carry_out(s, chosen);
 }
 
 // The frame: the live scene from the orbit camera, or during a replay the recorded coordinates of its moment from
@@ -475,7 +598,7 @@ bool render_frame(WindowRun& s, const FrameInput& in) {
     fill_frame(w, s.view, s.f);
     s.f.camera = in.cam;
   }
-  s.f.overlay = s.overlay;
+  s.f.overlay = s.ui_visible || s.front.screen != Screen::Playing;  // --no-overlay hides no menu
   if (auto ok = s.r.render(s.f); !ok) {
     std::fprintf(stderr, "boxing: rendering failed: %s\n", ok.error().c_str());
     return false;
@@ -502,10 +625,45 @@ void save_screenshot_if_asked(WindowRun& s) {
   else std::fprintf(stderr, "boxing: screenshot failed\n");
 }
 
+// The window's title says what runs and the screen: "Boxing - title (seed 1)", "Boxing - play (seed 3)", "Boxing -
+// play (seed 3) - result" (a player sees it; a window test finds its window by it and waits on its screen).
+std::string window_title(const FrontEnd& fe, const Options& world) {
+  const std::string seed = " (seed " + std::to_string(world.seed) + ")";
+  if (fe.screen == Screen::Title) return "Boxing - title" + seed;
+  const std::string what = "Boxing - " + (world.mode.empty() ? world.scenario : world.mode) + seed;
+  return fe.screen == Screen::Playing ? what : what + " - " + screen_name(fe.screen);
+}
+
+void update_title(WindowRun& s) {
+  std::string t = window_title(s.front, s.world->options);
+  if (t == s.title) return;
+  s.win.set_title(t);
+  s.title = std::move(t);
+}
+
+// The frame's sound: the listener at the camera, the slow motion's speed, the world's new events mixed and played
+// (the device, and --audio-out). False (said) when the WAV cannot be written.
+bool feed_audio(GameAudio& a, WindowRun& s, const FrameInput& in) {
+  game_audio_listen(a, in.cam);
+  game_audio_speed(a, time_scale(s.panel));
+  auto ok = game_audio_update(a, *s.world);
+  if (!ok) std::fprintf(stderr, "%s\n", ok.error().c_str());
+  return ok.ok();
+}
+
 // After the window closes: the report, the recording, and the exit code (1 on a validation error).
 int finish_windowed(WindowRun& s) {
   World& w = *s.world;
-  if (auto ok = write_report(s.o.report, base_report(s.o, w, s.frames, s.r, s.times, false)); !ok) {
+  nlohmann::json report = base_report(s.o, w, s.frames, s.r, s.times, false);
+  // The window's own state at the close and what its keys and menus did, in order (the window tests read it).
+  report["front_end"] = {{"screen", screen_name(s.front.screen)},
+                         {"mode", w.options.mode},
+                         {"panel_open", s.panel.open},
+                         {"debug_overlay", s.overlay},
+                         {"physics_paused", s.panel.paused},
+                         {"time_scale", time_scale_name(s.panel)},
+                         {"log", s.log}};
+  if (auto ok = write_report(s.o.report, report); !ok) {
     std::fprintf(stderr, "%s\n", ok.error().c_str());
     return 1;
   }
@@ -522,7 +680,9 @@ int finish_windowed(WindowRun& s) {
 
 // The window: one loop of stages a frame, in this order; the simulation steps between the input and the panels.
 int run_windowed(const Options& o) {
-  auto made = make_world(o);
+  // The title shows the match's ring and boxers behind it, waiting (the simulation runs only while playing).
+  const bool title = front_end_for(o).screen == Screen::Title;
+  auto made = make_world(title ? apply_mode(o, Mode::Watch) : o);
   if (!made) {
     std::fprintf(stderr, "%s\n", made.error().c_str());
     return 1;
@@ -531,8 +691,7 @@ int run_windowed(const Options& o) {
   eng::platform::WindowConfig wc;
   wc.width = o.width;
   wc.height = o.height;
-  // The scenario and seed in the title (a player sees what runs; a test's xdotool finds its own window).
-  wc.title = "Boxing - " + o.scenario + " (seed " + std::to_string(o.seed) + ")";
+  wc.title = window_title(front_end_for(o), title ? apply_mode(o, Mode::Watch) : o);
   auto window = eng::platform::Window::create(wc);
   if (!window) {
     std::fprintf(stderr, "boxing: %s\n", window.error().c_str());
@@ -544,6 +703,12 @@ int run_windowed(const Options& o) {
     return 1;
   }
   WindowRun s(o, world, **window, **renderer);
+  s.title = wc.title;
+  auto audio = make_game_audio({o.audio_out, true, {}});  // the device (or silent, said once) and --audio-out
+  if (!audio) {
+    std::fprintf(stderr, "%s\n", audio.error().c_str());
+    return 1;
+  }
   while (!s.win.should_close()) {
     restart_if_asked(s);
     s.win.poll_events();
@@ -551,18 +716,27 @@ int run_windowed(const Options& o) {
     handle_keys(s, in);
     handle_mouse(s, in);
     step_simulation(s);
+    if (!feed_audio(**audio, s, in)) return 1;
     watch_for_replay(s);
     draw_panels(s);
+    update_title(s);
     if (s.win.minimized()) continue;
     if (!render_frame(s, in)) return 1;
     save_screenshot_if_asked(s);
+  }
+  if (auto ok = game_audio_finish(**audio, *s.world); !ok) {
+    std::fprintf(stderr, "%s\n", ok.error().c_str());
+    return 1;
   }
   return finish_windowed(s);
 }
 
 }  // namespace
 
-int run(const Options& o) {
+int run(const Options& given) {
+  // --mode: its scenario and players (front_end.h), in the window and headless alike.
+  const std::optional<Mode> mode = mode_from_name(given.mode);
+  const Options o = mode ? apply_mode(given, *mode) : given;
   bool headless = o.headless;
   if (!headless && !eng::platform::display_available()) {
     std::fprintf(stderr, "boxing: no display found (DISPLAY is not set or the X server does not answer); "

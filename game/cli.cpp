@@ -134,6 +134,13 @@ Check read_screenshot(const std::string& flag, const std::string& v, Options& o)
   return std::nullopt;
 }
 
+Check read_audio_out(const std::string& flag, const std::string& v, Options& o) {
+  if (v.empty()) return missing(flag);
+  if (v.size() < 4 || v.substr(v.size() - 4) != ".wav") return bad("--audio-out needs a .wav file name, got '" + v + "'");
+  o.audio_out = v;
+  return std::nullopt;
+}
+
 Check read_seed(const std::string&, const std::string& v, Options& o) {
   if (!parse_u64(v, o.seed)) return bad("--seed must be a non-negative integer, got '" + v + "'");
   return std::nullopt;
@@ -144,6 +151,19 @@ Check read_scenario(const std::string&, const std::string& v, Options& o) {
   if (!s) return bad("unknown scenario '" + v + "'");
   o.scenario_id = *s;
   o.scenario = v;
+  o.scenario_given = true;
+  return std::nullopt;
+}
+
+// --ai LEVEL or LEVEL,LEVEL: one level for both boxers, or red's and blue's.
+Check read_ai(const std::string&, const std::string& v, Options& o) {
+  const size_t comma = v.find(',');
+  const std::string red = v.substr(0, comma), blue = comma == std::string::npos ? red : v.substr(comma + 1);
+  const std::string levels[2] = {red, blue};
+  for (const std::string& l : levels)
+    if (l != "easy" && l != "normal" && l != "hard")
+      return bad("--ai takes easy, normal or hard, or two of them for red and blue (e.g. easy,hard), got '" + v + "'");
+  o.ai = {levels[0], levels[1]};
   return std::nullopt;
 }
 
@@ -195,11 +215,16 @@ const std::vector<Flag> kFlags = {
     {{"--seed"}, "N", read_seed, "arena layout and all randomness (default 1)"},
     {{"--scenario"}, "NAME", read_scenario,
      "arena | ragdolls | stand | push | graph-walk | match | impacts (default arena)"},
+    {{"--mode"}, "MODE", word(&Options::mode, {"watch", "play", "versus", "sandbox"}),
+     "start a mode without the title screen: watch (AI vs AI), play (you are red, vs the AI),\n"
+     "versus (two players), sandbox (the hands-on lab); headless runs it too"},
     {{"--camera"}, "NAME", one_of(&Options::camera, {"default", "closeup", "side", "top"}, "camera"),
      "default | closeup | side | top"},
     {{"--screenshot"}, "FILE.png", read_screenshot, "write the last frame"},
     {{"--report"}, "FILE.json", path(&Options::report),
      "write what ran: seed, seconds, frames, device, frame times, scenario results"},
+    {{"--audio-out"}, "FILE.wav", read_audio_out,
+     "write the game's sound (16-bit stereo 48 kHz, simulation time), headless too"},
     {{"--content"}, "DIR", path(&Options::content_dir), "the content folder (default: the repository's content/)"},
     {{"--frames-dir"}, "DIR", path(&Options::frames_dir), "headless: write each rendered frame as DIR/frame_NNNNN.png"},
     {{"--render-every"}, "N", integer(&Options::render_every, 0, 1000000, "a non-negative integer"),
@@ -245,6 +270,10 @@ const std::vector<Flag> kFlags = {
      "match: a round's length (default 180)"},
     {{"--rounds"}, "N", integer(&Options::rounds, 1, 15, "an integer from 1 to 15"),
      "match: the bout's rounds, a minute's rest between them (default 3)"},
+    {{"--rest-seconds"}, "S", number(&Options::rest_seconds, 1.0, 600.0, "a number from 1 to 600"),
+     "match: the rest between rounds (default 60)"},
+    {{"--ai"}, "LEVEL[,LEVEL]", read_ai,
+     "match: the AI's level, easy | normal | hard, for both boxers or red's,blue's (default normal)"},
     {{"--start-apart"}, "M", number(&Options::start_apart, 0.8, 3.6, "a number from 0.8 to 3.6"),
      "match: the marks' distance, pelvis to pelvis (default 2.8; less starts the fight at range)"},
     {{"--player"}, "0|1", choice<int>(&Options::player, {{"0", 0}, {"1", 1}}),
@@ -341,8 +370,9 @@ usage: boxing [flags]            play (window; headless when there is no display
       if (f.command == command) append_help(out, f);
   }
   out += R"(
-window controls: F12 screenshot (to out/), H toggle overlay, G toggle ghost, C cycle camera,
-                 right mouse drag orbit, wheel zoom, Esc quit
+window controls: title: arrows / Enter / mouse; Esc pause menu (resume, restart, quit to title);
+                 Tab the physics panel, H the debug overlay, F12 screenshot (to out/), G ghost,
+                 C cycle camera, right mouse drag orbit, wheel zoom
 )";
   return out;
 }
@@ -375,6 +405,9 @@ eng::Result<Options> parse_cli(const std::vector<std::string>& args) {
     if (!f->command.empty() && f->command != o.command) return bad(flag + " belongs to 'boxing " + f->command + "'");
   }
   if (o.command == "clips" && o.sheet_dir.empty() && !o.help) return bad("'boxing clips' needs --sheet DIR");
+  if (!o.mode.empty() && o.scenario_given)
+    return bad("--mode and --scenario both choose what runs: give one (--mode " + o.mode + " runs the " +
+               (o.mode == "sandbox" ? "stand" : "match") + " scenario)");
   return o;
 }
 

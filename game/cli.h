@@ -1,6 +1,7 @@
 #pragma once
 // Command-line options of build/boxing. parse_cli never exits: a bad flag or value comes back as an Error whose
 // message is the one line main prints before exiting with code 2.
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -22,9 +23,15 @@ struct Options {
   uint64_t seed = 1;
   Scenario scenario_id = Scenario::Arena;  // what the game branches on (scenario.h, game/scenarios/)
   std::string scenario = "arena";       // its name, as given (for display; scenario_name(scenario_id))
+  bool scenario_given = false;          // --scenario given (the window then skips the title screen)
+  // --mode watch|play|versus|sandbox: a front-end mode started directly (game/front_end.h apply_mode sets the
+  // scenario and the players from it); "" = none: the window opens the title screen unless --scenario is given,
+  // headless runs --scenario as before.
+  std::string mode;
   std::string camera = "default";      // default | closeup | side | top
   std::string screenshot;              // PNG of the last frame
   std::string report;                  // JSON report
+  std::string audio_out;               // --audio-out FILE.wav: the mixed sound (game/audio/game_audio.h)
   std::string content_dir;             // where content/ lives (default: the source tree's content/)
   std::string frames_dir;              // headless: write every rendered frame here as PNG
   int render_every = 0;                // headless: render every Nth display frame (0 = only the last)
@@ -70,7 +77,11 @@ struct Options {
   double round_seconds = 180.0;       // --round-seconds: a round's length
   int rounds = 3;                     // --rounds: the bout's rounds (bout.h)
   double start_apart = 2.8;           // --start-apart: the match's marks, pelvis to pelvis (m; arena.h kRingSeparation)
+  double rest_seconds = 60.0;         // --rest-seconds: the rest between rounds (BoutTuning::rest_seconds)
   int player = -1;                    // --player 0|1: that boxer takes the keyboard (-1: both AI)
+  // --ai LEVEL[,LEVEL]: red's and blue's AI level, easy | normal | hard (fighter_ai.h apply_ai_level; normal is the
+  // fight as tuned, bit for bit)
+  std::array<std::string, 2> ai = {"normal", "normal"};
   // the player's hands (game/interaction/)
   std::string input;                  // --input FILE.json: timed input events (drags, throws, pushes, keys, settings)
   std::string record;                 // --record FILE.json: every input event applied, in the same form

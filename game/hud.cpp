@@ -19,7 +19,7 @@ void draw_stats_panel(const HudStats& s) {
   const int rows = 2 + static_cast<int>(s.lines.size());
   const float sep = s.lines.empty() ? 0.0f : style.ItemSpacing.y + 1.0f;
   const float h = rows * ImGui::GetTextLineHeightWithSpacing() - style.ItemSpacing.y + sep + 2.0f * style.WindowPadding.y;
-  ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_Always);
+  ImGui::SetNextWindowPos(ImVec2(10, s.top), ImGuiCond_Always);
   ImGui::SetNextWindowSize(ImVec2(w + 2.0f * style.WindowPadding.x, h), ImGuiCond_Always);
   ImGui::SetNextWindowBgAlpha(0.55f);
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoSavedSettings |
@@ -42,40 +42,99 @@ std::string match_clock_text(const MatchHud& h) {
   return line;
 }
 
-void draw_match_panel(const MatchHud& h) {
+namespace {
+
+ImU32 rgba(const float c[3], float a = 1.0f) { return ImGui::ColorConvertFloat4ToU32(ImVec4(c[0], c[1], c[2], a)); }
+
+// A team colour made readable as text on a dark ground (the renderer's colours are dark, linear RGB).
+ImU32 bright(const float c[3]) {
+  const float l[3] = {0.3f + 0.9f * c[0], 0.3f + 0.9f * c[1], 0.3f + 0.9f * c[2]};
+  return rgba(l);
+}
+
+}  // namespace
+
+float hud_text_width(ImFont* font, const char* text) {
+  ImFont* f = font ? font : ImGui::GetFont();
+  return f->CalcTextSizeA(f->FontSize, 1e9f, 0.0f, text).x;
+}
+
+void hud_text(ImDrawList* dl, ImFont* font, float x, float y, float align_x, ImU32 colour, const char* text) {
+  ImFont* f = font ? font : ImGui::GetFont();
+  x -= align_x * hud_text_width(f, text);
+  const float shadow = std::max(1.0f, f->FontSize / 14.0f);  // a drop shadow keeps the type legible on the lit ring
+  dl->AddText(f, f->FontSize, ImVec2(x + shadow, y + shadow), IM_COL32(0, 0, 0, 200), text);
+  dl->AddText(f, f->FontSize, ImVec2(x, y), colour, text);
+}
+
+// Per side a plate along the top (red left, blue right, mirrored): the name in the boxer's colour, its tag, the
+// consciousness bar, punches and knockdowns; the round and clock between them; below, the count, the cards or the
+// result. On ImGui's background list: under every panel, taking no input.
+void draw_broadcast_hud(const MatchHud& h, const HudFonts& fonts) {
   const ImGuiIO& io = ImGui::GetIO();
-  const float w = 460.0f;
-  ImGui::SetNextWindowPos(ImVec2(0.5f * (io.DisplaySize.x - w), 10), ImGuiCond_Always);
-  ImGui::SetNextWindowSize(ImVec2(w, h.banner.empty() ? 96.0f : 124.0f), ImGuiCond_Always);  // fixed: see above
-  ImGui::SetNextWindowBgAlpha(0.55f);
-  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoSavedSettings |
-                                 ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav |
-                                 ImGuiWindowFlags_NoInputs;
-  if (ImGui::Begin("##match", nullptr, flags)) {
-    char line[128];
-    const std::string clock = match_clock_text(h);
-    ImGui::SetCursorPosX(0.5f * (w - ImGui::CalcTextSize(clock.c_str()).x));
-    ImGui::TextUnformatted(clock.c_str());
-    const ImVec4 colour[2] = {ImVec4(0.85f, 0.15f, 0.12f, 1.0f), ImVec4(0.15f, 0.3f, 0.9f, 1.0f)};
-    ImGui::Columns(2, nullptr, false);
-    for (int k = 0; k < 2; ++k) {
-      const MatchHud::Side& s = h.side[k];
-      ImGui::PushStyleColor(ImGuiCol_PlotHistogram, colour[k]);
-      ImGui::ProgressBar(s.consciousness, ImVec2(-1, 14), "");
-      ImGui::PopStyleColor();
-      std::snprintf(line, sizeof line, "%s%s  landed %d/%d  down %d", k == 0 ? "RED" : "BLUE", s.player ? " (you)" : "",
-                    s.landed, s.thrown, s.knockdowns);
-      ImGui::TextUnformatted(line);
-      ImGui::TextUnformatted(s.state);
-      ImGui::NextColumn();
+  ImDrawList* dl = ImGui::GetBackgroundDrawList();
+  const float W = io.DisplaySize.x, H = io.DisplaySize.y;
+  const float margin = 20.0f, plate_w = std::min(0.34f * W, 420.0f), top = 14.0f;
+  const ImU32 white = IM_COL32(245, 245, 240, 255), dim = IM_COL32(210, 210, 200, 230);
+  const float large = fonts.large ? fonts.large->FontSize : ImGui::GetFontSize();
+  char line[128];
+  for (int k = 0; k < 2; ++k) {
+    const MatchHud::Side& s = h.side[k];
+    const float x0 = k == 0 ? margin : W - margin - plate_w, x1 = x0 + plate_w;
+    const float ax = k == 0 ? 0.0f : 1.0f, xt = k == 0 ? x0 + 10.0f : x1 - 10.0f;
+    // The UI blends in linear space over the sRGB scene: a ground needs a high alpha to read dark.
+    dl->AddRectFilled(ImVec2(x0, top), ImVec2(x1, top + large + 58.0f), IM_COL32(6, 8, 12, 225), 6.0f);
+    dl->AddRectFilled(k == 0 ? ImVec2(x0, top) : ImVec2(x1 - 6.0f, top), k == 0 ? ImVec2(x0 + 6.0f, top + large + 58.0f)
+                                                                            : ImVec2(x1, top + large + 58.0f),
+                      rgba(s.colour), 3.0f);
+    hud_text(dl, fonts.large, xt, top + 4.0f, ax, bright(s.colour), s.name.c_str());
+    if (!s.tag.empty()) {
+      const float name_w = hud_text_width(fonts.large, s.name.c_str());
+      hud_text(dl, fonts.medium, k == 0 ? xt + name_w + 14.0f : xt - name_w - 14.0f, top + 12.0f, ax, white,
+               s.tag.c_str());
     }
-    ImGui::Columns(1);
-    if (!h.banner.empty()) {
-      ImGui::SetCursorPosX(0.5f * (w - ImGui::CalcTextSize(h.banner.c_str()).x));
-      ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.2f, 1.0f), "%s", h.banner.c_str());
-    }
+    // Consciousness: the bar drains toward the middle of the screen, as a broadcast's health bars do.
+    const float by = top + large + 12.0f, bw = plate_w - 20.0f, bx0 = x0 + 10.0f;
+    dl->AddRectFilled(ImVec2(bx0, by), ImVec2(bx0 + bw, by + 14.0f), IM_COL32(40, 40, 46, 220), 3.0f);
+    const float fill = std::clamp(s.consciousness, 0.0f, 1.0f) * bw;
+    const float f0 = k == 0 ? bx0 : bx0 + bw - fill;
+    if (fill > 0.0f) dl->AddRectFilled(ImVec2(f0, by), ImVec2(f0 + fill, by + 14.0f), bright(s.colour), 3.0f);
+    std::snprintf(line, sizeof line, "landed %d / %d   down %d", s.landed, s.thrown, s.knockdowns);
+    hud_text(dl, fonts.medium, xt, by + 20.0f, ax, dim, line);
   }
-  ImGui::End();
+  // The round and the clock.
+  const int secs = static_cast<int>(h.clock_s);
+  std::snprintf(line, sizeof line, "%d:%02d", secs / 60, secs % 60);
+  const float cw = std::max(120.0f, hud_text_width(fonts.large, line) + 40.0f);
+  dl->AddRectFilled(ImVec2(0.5f * (W - cw), top), ImVec2(0.5f * (W + cw), top + large + 40.0f), IM_COL32(6, 8, 12, 225),
+                    6.0f);
+  const std::string head = h.resting ? std::string("REST") : "ROUND " + std::to_string(h.round);
+  hud_text(dl, fonts.medium, 0.5f * W, top + 6.0f, 0.5f, dim, head.c_str());
+  hud_text(dl, fonts.large, 0.5f * W, top + 28.0f, 0.5f, white, line);
+  // A knockdown: who is down and the count, in the largest type.
+  const float mid = 0.30f * H;
+  if (h.down >= 0 && h.result.empty()) {
+    const MatchHud::Side& s = h.side[h.down];
+    const std::string down = s.name + " DOWN";
+    hud_text(dl, fonts.large, 0.5f * W, mid, 0.5f, bright(s.colour), down.c_str());
+    if (h.count > 0) {
+      const std::string n = std::to_string(h.count);
+      hud_text(dl, fonts.huge, 0.5f * W, mid + large + 4.0f, 0.5f, white, n.c_str());
+    }
+    if (h.count_stopped)
+      hud_text(dl, fonts.medium, 0.5f * W, mid + large + (fonts.huge ? fonts.huge->FontSize : 2.0f * large) + 10.0f, 0.5f,
+               dim, "count stopped: to the neutral corner");
+  }
+  if (!h.cards.empty() && h.result.empty()) hud_text(dl, fonts.large, 0.5f * W, mid, 0.5f, white, h.cards.c_str());
+  if (!h.result.empty()) hud_text(dl, fonts.large, 0.5f * W, mid, 0.5f, IM_COL32(255, 215, 60, 255), h.result.c_str());
+}
+
+void draw_key_hints(const std::string& text, ImFont* font) {
+  const ImGuiIO& io = ImGui::GetIO();
+  ImDrawList* dl = ImGui::GetBackgroundDrawList();
+  const float size = font ? font->FontSize : ImGui::GetFontSize();
+  hud_text(dl, font, 0.5f * io.DisplaySize.x, io.DisplaySize.y - size - 8.0f, 0.5f, IM_COL32(235, 235, 225, 215),
+           text.c_str());
 }
 
 }  // namespace boxing

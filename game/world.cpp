@@ -12,6 +12,7 @@
 #include "engine/control/servo/implicit_servo.h"
 #include "engine/physics/dynamics.h"
 #include "engine/physics/step.h"
+#include "game/audio/sound_events.h"
 #include "game/boxer_stepping.h"
 #include "game/boxing_motion.h"
 #include "game/interaction/chaos.h"
@@ -322,6 +323,8 @@ eng::Result<std::unique_ptr<World>> make_world(const Options& o) {
                                                   &b.settings.tuning.balance_step.replace_foothold})
       eng::control::prepare_foothold_search(*p);
   }
+  w->sounds = std::make_unique<SoundEventLog>();
+  sound_events_setup(*w, *w->sounds);
   return w;
 }
 
@@ -394,6 +397,7 @@ void step_world(World& w) {
   health_after_step(w);
   if (scenario.after_step) scenario.after_step(w);
   measure_getups(w);  // after the scenario's (the match's referee calls a boxer up or down there)
+  if (w.sounds) collect_sound_events(w, *w.sounds);  // read-only: what this tick sounds like (game/audio/)
   ++w.steps;
   const auto t4 = clock::now();
   w.profile.step1_ms += ms(t0, t1), w.profile.control_ms += ms(t1, t2), w.profile.step2_ms += ms(t2, t3);

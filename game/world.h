@@ -31,6 +31,7 @@ inline constexpr int kStepsPerFrame = 4;  // 60 Hz display frames
 struct Match;
 struct Interaction;
 struct Chaos;
+struct SoundEventLog;
 
 struct LooseBody {
   int body = 0;
@@ -84,6 +85,7 @@ struct World {
   std::unique_ptr<Match> match;  // the match scenario's fight (game/match/match.h); inactive elsewhere
   std::unique_ptr<Interaction> interaction;  // the player's hands: drags, thrown objects, scripted and recorded input
   std::unique_ptr<Chaos> chaos;              // --chaos: seeded random input events (game/interaction/chaos.h)
+  std::unique_ptr<SoundEventLog> sounds;     // each tick's sound events, read from the step (game/audio/sound_events.h)
   Health health;                             // measured every step (the report's health block)
   GetUpTracker getups;                       // every knockdown and get-up, measured (the report's getups)
   RingRopesState ropes;                      // the match ring's ropes (ring_ropes.h): their push and who touched them

@@ -47,6 +47,8 @@ class Window {
   // GLFW_KEY_* codes: pressed during the last poll_events() (edge), and currently held.
   bool key_pressed(int glfw_key) const;
   bool key_down(int glfw_key) const;
+  // Every key press of the last poll_events(), in order, repeats included (a menu takes two quick Downs as two).
+  const std::vector<int>& keys_pressed() const { return pressed_; }
   glm::dvec2 mouse_position() const;
   bool mouse_button_down(int glfw_button) const;
   glm::dvec2 scroll_delta() const;  // accumulated during the last poll_events()

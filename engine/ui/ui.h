@@ -9,6 +9,10 @@
 // AddInputCharacter for text), which is what UiInput holds. A button therefore needs the press and the release in
 // different frames; UiInput::mouse_down latches presses shorter than a frame for that reason.
 //
+// Fonts: ImGui's default (ProggyClean, 13 px) stays the first font, what every panel uses; a game's title screen and
+// broadcast HUD also get a bold display face in three sizes (ui_font: Medium 18, Large 28, Huge 72 px), rasterised from
+// DejaVu Sans Bold (Debian's fonts-dejavu-core) when it is installed, else ImGui's default face at those sizes.
+//
 // Each Ui owns its ImGui context (made current around every call), so several can coexist, e.g. one per renderer
 // in tests. Headless and deterministic: nothing reads a clock or a window; the font atlas is built on the first
 // frame if no renderer backend built it (so a Ui works without a GPU).
@@ -16,8 +20,11 @@
 
 struct ImGuiContext;
 struct ImDrawData;
+struct ImFont;
 
 namespace eng::ui {
+
+enum class Font { Default, Medium, Large, Huge };
 
 class Ui {
  public:
@@ -34,6 +41,8 @@ class Ui {
   friend void ui_begin(Ui&, const UiInput&);
   friend void ui_end(Ui&);
   ImGuiContext* imgui_ = nullptr;
+  ImFont* fonts_[4] = {nullptr, nullptr, nullptr, nullptr};
+  friend ImFont* ui_font(const Ui&, Font);
   bool in_frame_ = false, has_frame_ = false;
 };
 
@@ -44,6 +53,11 @@ void ui_end(Ui& ui);
 // Whether the UI claims the mouse / keyboard this frame (valid after ui_begin).
 bool ui_wants_mouse(const Ui& ui);
 bool ui_wants_keyboard(const Ui& ui);
+// Whether a text field is being edited (io.WantTextInput): only then do typed keys belong to the UI, whatever window
+// was clicked last (a game routes its own keys unless this is true).
+bool ui_wants_text(const Ui& ui);
+// A font for ImGui::PushFont (or ImDrawList::AddText), owned by the Ui's atlas.
+ImFont* ui_font(const Ui& ui, Font f);
 // The last ended frame's draw lists, or nullptr when there is none (before the first ui_end, or inside a frame).
 ImDrawData* ui_draw_data(const Ui& ui);
 

@@ -113,6 +113,7 @@ void bout_setup(World& w) {
   bt = Bout{};
   bt.tuning.rounds = w.options.rounds;
   bt.round_seconds = w.options.round_seconds;
+  bt.tuning.rest_seconds = w.options.rest_seconds;
 }
 
 void bout_end(World& w, int winner, const char* method) {

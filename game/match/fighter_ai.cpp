@@ -21,6 +21,18 @@ FighterStyle draw_fighter_style(Rng& rng, const FighterAiTuning& t) {
   return s;
 }
 
+bool apply_ai_level(FighterAiTuning& t, const std::string& level) {
+  if (level == "normal") return true;
+  double attack = 1.0, defence = 1.0, reaction = 0.0;
+  if (level == "easy") attack = 0.6, defence = 0.5, reaction = 0.1;
+  else if (level == "hard") attack = 1.25, defence = 1.4, reaction = -0.03;
+  else return false;
+  t.attack_rate_min *= attack, t.attack_rate_max *= attack;
+  t.defence_min *= defence, t.defence_max *= defence;
+  t.reaction_min += reaction, t.reaction_max += reaction;
+  return true;
+}
+
 int punch_index(const std::string& clip) {
   for (size_t i = 0; i < kPunchClips.size(); ++i)
     if (clip == kPunchClips[i]) return static_cast<int>(i);

@@ -177,6 +177,7 @@ void read_hits(World& w) {
         e.blocked = true;
       } else if ((def.part == BodyPart::Head || def.part == BodyPart::Torso) && h.approach_speed >= mt.tuning.land_speed) {
         e.landed = true;
+        e.landed_at = t;
         ++f.landed;
         if (const int pi = punch_index(e.punch); pi >= 0) ++f.ai.landed_of[pi];
         f.landing = f.open_punch;

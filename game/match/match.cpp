@@ -76,6 +76,7 @@ void match_setup(World& w) {
   for (int k = 0; k < 2 && k < static_cast<int>(w.boxers.size()); ++k) {
     MatchFighter& f = mt.fighter[k];
     f.ai.rng = Rng(w.options.seed * 0x9E3779B97F4A7C15ull + 0xF16A7ull + static_cast<uint64_t>(k));
+    apply_ai_level(f.ai.tuning, w.options.ai[k]);  // the CLI checked the level; normal changes nothing
     f.ai.style = draw_fighter_style(f.ai.rng, f.ai.tuning);
     // Both settle into guard first.
     f.ai.next_attack = f.ai.tuning.first_attack + f.ai.rng.uniform(0.0, f.ai.tuning.first_attack_spread);

@@ -148,6 +148,7 @@ struct PunchEvent {
   std::array<double, 2> consciousness{};  // the thrower's and the opponent's at the punch's start
   double impulse = 0.0;   // N s over impact_window
   double damage = 0.0;
+  double landed_at = -1.0;  // s, the tick it landed (its first touch on head or torso); < 0: did not land
 };
 
 struct GetUp {

@@ -21,15 +21,21 @@ MatchHud match_hud(const World& w) {
     h.side[k].consciousness = static_cast<float>(w.boxers[k].ctl.root_spring.consciousness());
     h.side[k].landed = f.landed, h.side[k].thrown = f.thrown, h.side[k].knockdowns = f.knockdowns;
     h.side[k].player = f.player;
+    h.side[k].name = k == 0 ? "RED" : "BLUE";
+    for (int c = 0; c < 3; ++c) h.side[k].colour[c] = w.boxers[k].team_color[c];
+    if (f.player) h.side[k].tag = "YOU";
     h.side[k].state = boxer_state_name(w.boxers[k].ctl.state.state);
     if (f.getup >= 0 && !mt.over) {
       const GetUp& g = mt.getups[f.getup];
       // The count's number once it has started (the standing boxer in a neutral corner, referee.h).
       h.banner = std::string(k == 0 ? "RED" : "BLUE") + " DOWN";
+      h.down = k;
       if (g.count_from >= 0.0) {
         const int count = std::min(static_cast<int>(mt.tuning.count_seconds),
                                    static_cast<int>(g.counted_ticks * kPhysicsDt) + 1);
         h.banner += "   " + std::to_string(count);
+        h.count = count;
+        h.count_stopped = !g.counting;
         if (!g.counting) h.banner += "   (count stopped: to the neutral corner)";
       }
     }
@@ -39,9 +45,32 @@ MatchHud match_hud(const World& w) {
     const RoundCard& c = mt.bout.cards.back();
     h.banner = "END OF ROUND " + std::to_string(c.round) + "  ";
     for (const auto& j : c.judges) h.banner += "  " + std::to_string(j[0]) + "-" + std::to_string(j[1]);
+    h.cards = h.banner;
   }
-  if (mt.over) h.banner = mt.bout.result.text;
+  if (mt.over) h.banner = h.result = mt.bout.result.text;
   return h;
+}
+
+BoutSummary bout_summary(const World& w) {
+  const Match& mt = *w.match;
+  const Bout& bt = mt.bout;
+  BoutSummary s;
+  for (int k = 0; k < 2 && k < static_cast<int>(w.boxers.size()); ++k)
+    for (int c = 0; c < 3; ++c) s.colour[k][c] = w.boxers[k].team_color[c];
+  s.winner = bt.result.winner;
+  s.method = bt.result.method;
+  s.round = bt.result.round;
+  s.time_s = bt.result.time_s;
+  const std::array<int, 3> d = decide(bt.cards);
+  s.judges_for[0] = d[1], s.judges_for[1] = d[2];
+  for (const RoundCard& c : bt.cards) {
+    BoutSummary::Round r;
+    r.round = c.round;
+    for (int j = 0; j < 3; ++j) r.judges[j][0] = c.judges[j][0], r.judges[j][1] = c.judges[j][1];
+    for (int k = 0; k < 2; ++k) r.landed[k] = c.landed[k], r.thrown[k] = c.thrown[k], r.knockdowns[k] = c.knockdowns[k];
+    s.rounds.push_back(r);
+  }
+  return s;
 }
 
 namespace {
@@ -86,7 +115,8 @@ nlohmann::json match_report(const World& w) {
                       {"opening_m", e.opening},
                       {"consciousness", e.consciousness},
                       {"impulse", e.impulse},
-                      {"damage", e.damage}});
+                      {"damage", e.damage},
+                      {"landed_at", e.landed ? nlohmann::json(e.landed_at) : nlohmann::json(nullptr)}});
   nlohmann::json getups = nlohmann::json::array();
   for (const GetUp& g : mt.getups)
     getups.push_back({{"boxer", g.boxer},
@@ -155,6 +185,7 @@ nlohmann::json match_report(const World& w) {
                                    {"reaction_s", s.reaction_s}, {"body_share", s.body_share},
                                    {"punch_weight", s.punch_weight}};
            })},
+          {"ai", w.options.ai},  // the AI levels asked for (--ai), red's and blue's
           {"player_commands_taken", pair([](const MatchFighter& f) { return f.commands_taken; })},
           {"round_seconds", bt.round_seconds},
           {"round", bt.round},

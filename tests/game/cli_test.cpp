@@ -1,6 +1,11 @@
 // Command-line parsing of build/boxing: good flags land in Options, every bad flag or value is one error line.
 #include <gtest/gtest.h>
 
+#include <array>
+#include <string>
+#include <utility>
+#include <vector>
+
 #include "game/cli.h"
 
 using boxing::parse_cli;
@@ -23,7 +28,7 @@ TEST(Cli, ParsesEveryValueFlag) {
                       "--scenario", "push", "--screenshot", "a.png", "--report", "r.json", "--servo",
                       "parent-meathook", "--push-dir", "90", "--push-force", "150", "--push-duration", "0.1",
                       "--push-at", "3", "--push-shape", "sine", "--camera", "closeup", "--ghost", "--render-every", "30", "--root-spring",
-                      "on", "--root-spring-max", "80"});
+                      "on", "--root-spring-max", "80", "--audio-out", "out/m.wav"});
   ASSERT_TRUE(o.ok()) << o.error();
   EXPECT_TRUE(o->headless);
   EXPECT_EQ(o->width, 640);
@@ -33,6 +38,7 @@ TEST(Cli, ParsesEveryValueFlag) {
   EXPECT_EQ(o->scenario, "push");
   EXPECT_EQ(o->screenshot, "a.png");
   EXPECT_EQ(o->report, "r.json");
+  EXPECT_EQ(o->audio_out, "out/m.wav");
   EXPECT_EQ(o->servo, "parent-meathook");
   EXPECT_DOUBLE_EQ(o->push_dir_deg, 90.0);
   EXPECT_DOUBLE_EQ(o->push_force, 150.0);
@@ -71,6 +77,8 @@ TEST(Cli, RejectsBadFlagsAndValuesWithOneLine) {
       {{"--scenario", "tennis"}, "tennis"},
       {{"--servo", "magic"}, "magic"},
       {{"--screenshot", "a.jpg"}, ".png"},
+      {{"--audio-out", "a.mp3"}, ".wav"},
+      {{"--audio-out"}, "--audio-out"},
       {{"--headless=yes"}, "--headless"},
       {{"--dot", "g.dot"}, "--dot"},
       {{"--root-spring", "maybe"}, "--root-spring"},
@@ -174,5 +182,35 @@ TEST(Cli, PresentIsAutoByDefaultAndTakesSwapchainOrShm) {
     auto bad = boxing::parse_cli({"--present", v});
     ASSERT_FALSE(bad.ok()) << v;
     EXPECT_NE(bad.error().find("--present must be auto, swapchain or shm"), std::string::npos) << bad.error();
+  }
+}
+
+TEST(Cli, ModeAiAndRestSecondsParseAndRejectBadValuesNamingTheFix) {
+  auto d = parse_cli({});
+  ASSERT_TRUE(d.ok());
+  EXPECT_EQ(d->mode, "");  // the window opens the title screen
+  EXPECT_EQ(d->ai, (std::array<std::string, 2>{"normal", "normal"}));
+  EXPECT_DOUBLE_EQ(d->rest_seconds, 60.0);
+  EXPECT_FALSE(d->scenario_given);
+  auto o = parse_cli({"--mode", "play", "--ai", "hard", "--rest-seconds", "2"});
+  ASSERT_TRUE(o.ok()) << o.error();
+  EXPECT_EQ(o->mode, "play");
+  EXPECT_EQ(o->ai, (std::array<std::string, 2>{"hard", "hard"}));  // one level: both boxers
+  EXPECT_DOUBLE_EQ(o->rest_seconds, 2.0);
+  auto two = parse_cli({"--ai", "easy,hard", "--scenario", "match"});
+  ASSERT_TRUE(two.ok()) << two.error();
+  EXPECT_EQ(two->ai, (std::array<std::string, 2>{"easy", "hard"}));  // red's, blue's
+  EXPECT_TRUE(two->scenario_given);
+  for (const auto& [args, says] : std::vector<std::pair<std::vector<std::string>, std::string>>{
+           {{"--ai", "brutal"}, "--ai takes easy, normal or hard"},
+           {{"--ai", "easy,"}, "--ai takes easy, normal or hard"},
+           {{"--ai", "easy,hard,normal"}, "--ai takes easy, normal or hard"},
+           {{"--mode", "arcade"}, "--mode must be watch, play, versus or sandbox"},
+           {{"--rest-seconds", "0"}, "--rest-seconds must be a number from 1 to 600"},
+           {{"--mode", "watch", "--scenario", "stand"}, "--mode and --scenario both choose what runs"}}) {
+    auto bad = parse_cli(args);
+    ASSERT_FALSE(bad.ok()) << args[0] << " " << args[1];
+    EXPECT_NE(bad.error().find(says), std::string::npos) << bad.error();
+    EXPECT_NE(bad.error().find("--help"), std::string::npos) << bad.error();
   }
 }

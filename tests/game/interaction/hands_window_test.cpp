@@ -1,7 +1,7 @@
 // The player's hands as a person uses them: the window build under the X server (scripts/test runs the suite in
 // Xvfb), xdotool's mouse and keys. A left-drag from boxer 0's head pulls the head toward the cursor (the physics
 // state in the report, not pixels) and the boxer recovers after the release; T throws a beach ball at the cursor that
-// hits boxer 1; clicks on the panel switch boxer 0's servo to person space (its combo) and boxer 1 to the PD balance
+// hits boxer 1; Tab opens the panel and clicks on it switch boxer 0's servo to person space (its combo) and boxer 1 to the PD balance
 // (a radio button), and F2 steps boxer 1's servo. The session's recording (--record) played back headless gives the same run, bit for bit.
 #include <gtest/gtest.h>
 
@@ -60,9 +60,9 @@ TEST(HandsWindow, DragThrowAndPanelClickAsAPersonAndTheRecordingReplaysBitForBit
          // the throw: the cursor on boxer 1's chest, T
          "xdotool mousemove " + W + std::to_string(cx) + " " + std::to_string(cy) + " && sleep 0.4 && "
          "xdotool key " + W + "t && sleep 1.5 && "
-         // the panel (its top-right corner is fixed: 340 px wide, 10 px from the edges): boxer 0's servo combo opened,
-         // "person" chosen in its list; boxer 1's PD radio
-         "xdotool mousemove " + W + "980 63 && sleep 0.4 && xdotool mousedown 1 && sleep 0.4 && xdotool mouseup 1 && "
+         // the panel (its top-right corner is fixed: 340 px wide, 10 px from the edges), opened with Tab (hidden at the
+         // start): boxer 0's servo combo opened, "person" chosen in its list; boxer 1's PD radio
+         "xdotool key " + W + "Tab && sleep 0.6 && xdotool mousemove " + W + "980 63 && sleep 0.4 && xdotool mousedown 1 && sleep 0.4 && xdotool mouseup 1 && "
          "sleep 0.6 && xdotool mousemove " + W + "962 105 && sleep 0.4 && xdotool mousedown 1 && sleep 0.4 && "
          "xdotool mouseup 1 && sleep 0.6 && "
          "xdotool mousemove " + W + "1140 176 && sleep 0.4 && xdotool mousedown 1 && sleep 0.4 && xdotool mouseup 1 && "
