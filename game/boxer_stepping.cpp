@@ -459,9 +459,6 @@ bool footwork_may_lift(Boxer& b, const StepView& v, const std::vector<Eigen::Vec
   const eng::control::BalanceStepState& st = b.ctl.balance_steps;
   const FootworkTuning& ft = b.settings.tuning.footwork;
   if (st.shift_time < ft.min_shift) return false;
-  // The stance foot must stand on a top: touching only a crate's side (a late landing short of its foothold) its sole
-  // holds no weight, and the body lifted onto it falls (docs/decisions/other-feet.md, the sitting falls).
-  if (!b.ctl.contacts.on_top[1 - r]) return false;
   // Unweighted: the foot bears less than unload_share of the body's weight (the com over the other foot's side).
   if (b.ctl.contacts.normal_force[r] < ft.unload_share * b.control_body.total_mass * 9.81) return true;
   Eigen::Vector2d centre = Eigen::Vector2d::Zero();

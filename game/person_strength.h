@@ -4,10 +4,8 @@
 // male, roughly hip extension 250 N m, knee 250, ankle 150, shoulder 100, elbow 70"); the spine's and the neck's are
 // our estimates inside the ranges the isometric-strength literature reports for adult men (trunk extension 200-300
 // N m, neck extension 30-50), not one source's figures. The gloves are welded to the forearms: no wrist joint.
-// The get-ups' report measures against it (getup_metrics.h). The balance QP plans the shoulders, elbows and neck within
-// it (BalanceQpTuning::strength_*, docs/decisions/arm-whip.md); the legs and spine, whose torques the feet's contact
-// forces also set, are still guarded at one 500 N m (BalanceQpTuning::joint_torque_limit), and the carried get-up's
-// servo at 150 N m (issue 63). docs/decisions/getup-measures.md.
+// Today the get-ups' report measures against it (getup_metrics.h); the balance QP still guards every joint at one
+// 500 N m (BalanceQpTuning::joint_torque_limit). docs/decisions/getup-measures.md.
 #include <string_view>
 
 namespace boxing {

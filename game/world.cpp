@@ -1,7 +1,5 @@
 #include "game/world.h"
 
-#include "game/person_strength.h"
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -18,7 +16,6 @@
 #include "game/interaction/chaos.h"
 #include "game/interaction/interaction.h"
 #include "game/match/match.h"
-#include "game/person_strength.h"
 #include "game/rng.h"
 #include "game/scenarios/scenario_hooks.h"
 #include "game/world_build.h"
@@ -174,17 +171,11 @@ void configure_boxer_control(World& w, Boxer& b) {
     const auto& skel = w.boxer_desc.skeleton;
     q->trunk.assign(skel.size(), 0);
     q->arm.assign(skel.size(), 0);
-    q->strength.assign(skel.size(), 0.0);
-    q->strength_price.assign(skel.size(), 0.0);
-    q->strength_hold.assign(skel.size(), Eigen::Vector3d::Zero());
     for (int i = 0; i < skel.size(); ++i) {
       const std::string& name = skel.name[i];
       q->trunk[i] = i == 0 || name == "abdomen" || name == "chest" || name == "neck" || name == "head";
       q->arm[i] = name.rfind("upper_arm", 0) == 0 || name.rfind("forearm", 0) == 0;
-      // The plan bounds a person's strength at the joints no foot contact's force reaches (qp_balance.h).
-      if (q->arm[i] || name == "head") q->strength[i] = person_strength(name);
     }
-    q->in.effort.reserve(3 * skel.size());
   }
   setup_implicit_servo(w, b);
 }
@@ -441,10 +432,8 @@ nlohmann::json tick_profile_report(const World& w) {
 // The balance QP's solve cost (wall clock, this machine): median and 95th percentile per boxer; null with PD.
 nlohmann::json qp_report(const Boxer& b) {
   if (!b.uses_qp()) return nullptr;
-  const QpBalance& q = std::get<QpBalance>(b.ctl.balance);
-  const eng::core::LatencyHistogram& h = q.solve_us;
-  return {{"solves", h.count()}, {"solve_us_median", h.percentile(50)}, {"solve_us_p95", h.percentile(95)},
-          {"strength_resolves", q.strength_resolves}, {"strength_misses", q.strength_misses}};
+  const eng::core::LatencyHistogram& h = std::get<QpBalance>(b.ctl.balance).solve_us;
+  return {{"solves", h.count()}, {"solve_us_median", h.percentile(50)}, {"solve_us_p95", h.percentile(95)}};
 }
 
 // How far the clip's steps carried the feet (BoxerMetrics::step_travel_*): count, mean and spread of the fraction.

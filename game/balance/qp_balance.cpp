@@ -617,44 +617,11 @@ void weigh_tasks(QpBalance& q, BalanceTick& tick, QpStep& s) {
 // Stage 7: the solve, its torques written to the boxer's DoFs (the root rows: the root assist's generalised force,
 // zero when it is off). A non-finite solve (a guard) leaves the joints limp for the tick instead of poisoning the
 // simulation. Its wall-clock cost is recorded for the report only (boxers[i].qp.solve_us_median / p95).
-// Where a joint's planned torque passes its strength (QpBalance::strength), that joint is held at its strength in the
-// direction asked and the plan solved again (BalanceQpTuning::strength_*, an active set): the rest of the body then
-// plans around what the joint cannot give. Why not only a clip after the plan: a clipped arm misses its acceleration,
-// and the plan's balance counted on it (docs/decisions/arm-whip.md).
 void solve(QpBalance& q, BalanceTick& tick, QpStep& s) {
   eng::physics::Data& d = tick.d;
-  const eng::physics::Model& m = tick.m;
-  eng::control::BalanceQpInput& in = q.in;
-  const Boxer& b = tick.b;
-  const BalanceQpTuning& tq = b.settings.tuning.qp;
+  const eng::control::BalanceQpInput& in = q.in;
   const auto t0 = std::chrono::steady_clock::now();
-  eng::control::balance_qp_solve(m, d, in, q.solve_params, q.ws, q.out);
-  std::fill(q.strength_price.begin(), q.strength_price.end(), 0.0);
-  for (int round = 0; round < tq.strength_rounds && q.out.tau.allFinite(); ++round) {
-    bool over = false;
-    for (size_t bone = 1; bone < q.strength.size(); ++bone) {
-      const double limit = q.strength[bone];
-      if (limit <= 0.0) continue;
-      const eng::physics::Body& body = m.bodies[b.bodies.body[bone]];
-      const auto tau = q.out.tau.segment(body.v_index - in.dof_begin, body.nv);
-      const double norm = tau.norm();
-      if (norm <= (1.0 + tq.strength_slack) * limit) continue;
-      double& price = q.strength_price[bone];
-      price = price > 0.0 ? 10.0 * price : tq.strength_price / (limit * limit);
-      q.strength_hold[bone].head(body.nv) = (limit / norm) * tau;
-      over = true;
-    }
-    if (!over) break;
-    in.effort.clear();
-    for (size_t bone = 1; bone < q.strength.size(); ++bone) {
-      if (q.strength_price[bone] <= 0.0) continue;
-      const eng::physics::Body& body = m.bodies[b.bodies.body[bone]];
-      for (int k = 0; k < body.nv; ++k)
-        in.effort.push_back({body.v_index + k, q.strength_price[bone], q.strength_hold[bone][k]});
-    }
-    eng::control::balance_qp_solve(m, d, in, q.solve_params, q.ws, q.out);
-    ++q.strength_resolves;
-  }
+  eng::control::balance_qp_solve(tick.m, d, in, q.solve_params, q.ws, q.out);
   q.solve_us.record(std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count());
   s.finite = q.out.tau.allFinite();
   for (int k = 0; k < in.dof_end - in.dof_begin; ++k) d.tau[in.dof_begin + k] = s.finite ? q.out.tau[k] : 0.0;
@@ -681,9 +648,7 @@ void apply_limits(QpBalance& q, BalanceTick& tick, const QpStep& s) {
     if (body.nv == 0) continue;
     auto t = d.tau.segment(body.v_index, body.nv);
     const double n = t.norm();
-    const double limit = q.strength[size_t(bone)] > 0.0 ? q.strength[size_t(bone)] : tq.joint_torque_limit;
-    if (n > limit) t *= limit / n;
-    if (q.strength[size_t(bone)] > 0.0 && n > tq.strength_miss * limit) ++q.strength_misses;
+    if (n > tq.joint_torque_limit) t *= tq.joint_torque_limit / n;
     const bool swinging = swing_leg && (bone == swing_leg->thigh || bone == swing_leg->shank || bone == swing_leg->foot);
     const bool limited = losing_balance && !swinging && (!step.active || handled);
     const bool arm = q.arm[size_t(bone)] || q.arm[size_t(skel.parent[bone])];  // upper arm, forearm, glove

@@ -72,15 +72,6 @@ struct BalanceQpTuning {
   double limit_calm_speed = 0.3;      // m/s
   double stance_drop = 0.04;          // m, the desired root this much below the clip's (knees bent deeper)
   double joint_torque_limit = 500.0;  // N m per joint (vector norm): a guard, never reached in play
-  // A person's strength (person_strength.h) as a bound inside the plan for the joints no ground contact reaches (the
-  // shoulders, elbows and neck), as an active set: a joint whose planned torque passes its strength by more than
-  // strength_slack is held at its strength in the direction the plan asked (priced strength_price / strength^2 per
-  // (N m)^2 off it) and the plan is solved again, the price x10 for a joint still over, at most strength_rounds
-  // re-solves; what is still over after them is clipped to the strength (docs/decisions/arm-whip.md).
-  double strength_price = 1e4;
-  double strength_slack = 0.02;
-  int strength_rounds = 3;
-  double strength_miss = 1.2;  // a plan still this far over a strength after the re-solves is counted (report)
   // Losing its balance (fewer than min_support_contacts, or tilted past losing_balance_tilt): each joint's strength
   // falls with its speed (joint_strength.h, Hill), full to 20 rad/s, none past 30 (docs/decisions/joint-speed.md).
   eng::control::TorqueVelocityLimit speed_strength{20.0, 30.0};
@@ -109,11 +100,6 @@ struct QpBalance {
   eng::control::BalanceQpParams params;  // prices and the root assist's limit (world.cpp, per tick the limit)
   std::vector<uint8_t> trunk;            // per bone: 1 for the trunk's (BalanceQpTuning::trunk_weight; world.cpp)
   std::vector<uint8_t> arm;              // per bone: 1 for an upper arm or forearm (BalanceQpTuning::arm_return_*)
-  std::vector<double> strength;          // per bone: its joint's strength in the plan (N m; 0: not bounded there)
-  std::vector<double> strength_price;    // per bone: this tick's price on its torque held at its strength (scratch)
-  std::vector<Eigen::Vector3d> strength_hold;  // per bone: the torque held (scratch; a hinge's in its first entry)
-  long strength_resolves = 0;            // re-solves with a joint held at its strength (report)
-  long strength_misses = 0;               // joints still over strength_miss x their strength after the re-solves (report)
   bool return_shift = false;              // the return step's weight shift under way: its com target ...
   Eigen::Vector2d return_shift_target = Eigen::Vector2d::Zero();  // ... moving over the other foot
   double slow_since = -1.0;              // s, the com slower than arm_return_com_speed since (< 0: not now)

@@ -290,22 +290,6 @@ void balance_qp_solve(const physics::Model& m, const physics::Data& d, const Bal
       }
     }
   }
-  // Joint torques asked (QpEffortTask): w (M_k qacc + c_k - torque)^2, M_k the DoF's row of the block's mass matrix
-  // (armature on its diagonal), c_k its bias and damping force.
-  // (Symmetric rank-1 updates into H's lower triangle, the upper one copied back once.)
-  bool effort = false;
-  for (const QpEffortTask& e : in.effort) {
-    const int k = e.dof - b0;
-    if (k < 6 || k >= n || e.weight <= 0.0) continue;
-    const auto& body = m.bodies[m.dof_body[e.dof]];
-    ws.row = M.row(k).transpose();
-    ws.row[k] += body.armature;
-    const double target = e.torque - (c_full[e.dof] + body.damping * d.v[e.dof]);
-    H.selfadjointView<Eigen::Lower>().rankUpdate(ws.row, e.weight);
-    ws.g.noalias() += (e.weight * target) * ws.row;
-    effort = true;
-  }
-  if (effort) H.triangularView<Eigen::StrictlyUpper>() = H.transpose();
   // Contact points stay put (damped): a heavily weighted task rather than an equality, because a flat foot's
   // four corners give 12 dependent rows, and a foot touching at one corner or edge must stay free to roll flat
   // about it (its orientation task does that).

@@ -85,16 +85,6 @@ struct QpSeparationTask {
   double weight = 1.0;
 };
 
-// A joint DoF's torque asked of the plan: weight (tau_dof - torque)^2 with tau_dof = (M qacc + c)_dof, exact for a DoF
-// no contact's force reaches through J^T f (an arm's, with the contacts on the feet). A joint bound (its strength) as
-// an active set does it: where the plan asked more than the bound, the caller holds that joint's torque at the bound,
-// in the direction asked, and solves again; the rest of the body then plans around it.
-struct QpEffortTask {
-  int dof = 0;          // the model's DoF index (inside the articulation's block)
-  double weight = 0.0;  // per (N m)^2
-  double torque = 0.0;  // N m, the torque asked
-};
-
 struct BalanceQpInput {
   int dof_begin = 0, dof_end = 0;  // the articulation's DoFs (first six: the free root)
   int root_body = 0;               // its root body (subtree for com / momentum)
@@ -104,11 +94,10 @@ struct BalanceQpInput {
   std::vector<QpAngularTask> angular;
   std::vector<QpPointTask> points;
   std::vector<QpSeparationTask> separations;
-  std::vector<QpEffortTask> effort;
   // Bodies whose joint limits the plan keeps off (BalanceQpParams::w_limit); empty: every joint of the articulation.
   std::vector<int> limit_bodies;
   void clear() {
-    contacts.clear(), angular.clear(), points.clear(), separations.clear(), effort.clear(), limit_bodies.clear();
+    contacts.clear(), angular.clear(), points.clear(), separations.clear(), limit_bodies.clear();
   }
 };
 

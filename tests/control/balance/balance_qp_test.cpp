@@ -323,37 +323,3 @@ TEST(BalanceQp, ASeparationTaskBetweenTwoSiblingLimbsIsMetAndSharedByBoth) {
   eng::control::balance_qp_solve(m, d, in, BalanceQpParams{}, ws, out);
   EXPECT_LT(std::abs(out.qacc[m.bodies[arm[1]].v_index]), 1e-6);
 }
-
-TEST(BalanceQp, AJointHeldAtItsStrengthGivesThatTorqueAndTheRestOfThePlanStillMeetsTheDynamics) {
-  Stand s(0.4);
-  for (int k = 0; k < s.m.nv; ++k) s.d.v[k] = 0.1 * std::sin(1.0 + 2.3 * k);
-  kinematics_and_dynamics(s.m, s.d);
-  s.in.angular[1].alpha = Vec3(0, -200.0, 0);  // the arm asked far more than a 10 N m joint gives
-  BalanceQp ws;
-  BalanceQpResult free_tau, held;
-  eng::control::balance_qp_solve(s.m, s.d, s.in, BalanceQpParams{}, ws, free_tau);
-  const int hinge = s.m.bodies[s.arm].v_index;
-  const double strength = 10.0;
-  ASSERT_GT(std::abs(free_tau.tau[hinge]), 2.0 * strength);  // the unbounded plan asks more than the strength
-  // Held at the strength in the direction asked, at the prices of the boxer's three rounds (1e4 / strength^2, x10,
-  // x100; BalanceQpTuning::strength_*): the excess over the strength falls each round, and at the last the plan gives
-  // the strength to within the boxer's slack, 2% (BalanceQpTuning::strength_slack; the excess falls about tenfold a
-  // round: 60%, then 10%, then 1.2% here).
-  const double asked = std::copysign(strength, free_tau.tau[hinge]);
-  double excess = std::abs(free_tau.tau[hinge]) - strength;
-  for (double price : {1e4, 1e5, 1e6}) {
-    s.in.effort.assign(1, {hinge, price / (strength * strength), asked});
-    eng::control::balance_qp_solve(s.m, s.d, s.in, BalanceQpParams{}, ws, held);
-    const double now = std::abs(held.tau[hinge]) - strength;
-    EXPECT_LT(now, excess);
-    excess = now;
-  }
-  EXPECT_NEAR(held.tau[hinge], asked, 0.02 * strength);
-  // The plan's accelerations are what that torque gives (ABA of the held torques and the planned contact forces) ...
-  const VecX qacc = qacc_under_aba(s, held);
-  EXPECT_LT((qacc - held.qacc).cwiseAbs().maxCoeff(), 1e-8);
-  EXPECT_LT(held.root_residual, 1e-6);
-  // ... and the arm accelerates less than it was asked, in the same direction.
-  EXPECT_LT(std::abs(held.qacc[hinge]), std::abs(free_tau.qacc[hinge]));
-  EXPECT_GT(held.qacc[hinge] * free_tau.qacc[hinge], 0.0);
-}
