@@ -20,6 +20,7 @@
 #include "game/control_panel.h"
 #include "game/front_end.h"
 #include "game/front_end_screens.h"
+#include "game/hit_feedback.h"
 #include "game/hud.h"
 #include "game/interaction/mouse_hands.h"
 #include "game/match/match.h"
@@ -282,6 +283,11 @@ struct WindowRun {
   bool ui_visible = true;  // the HUD and the screens (--no-overlay: none, a clean picture)
   PanelState panel;
   FrontEnd front;        // the screens: title, playing, paused, result (front_end.h)
+  // A heavy hit's hit-stop (hit_feedback.h): the simulation holds until then; the hits' times already read.
+  clock_type::time_point hit_stop_until{};
+  double hits_read_to = 0.0;
+  int hit_stops = 0;
+  double hit_stop_max_s = 0.0;
   std::string title;     // the window's title now
   std::vector<std::string> log;  // what the keys and menus did, in order (the report's front_end.log; tests read it)
   MouseHands hands;
@@ -363,6 +369,7 @@ void start_world(WindowRun& s, const Options& options) {
   s.hands = MouseHands{};
   s.replay = {};
   s.accumulator = 0.0;
+  s.hits_read_to = 0.0, s.hit_stop_until = {};
   s.panel.seed = int(options.seed);
 }
 
@@ -493,6 +500,10 @@ void step_simulation(WindowRun& s) {
   World& w = *s.world;
   constexpr double kMaxCatchUp = 0.25;
   const auto now = clock_type::now();
+  if (now < s.hit_stop_until) {  // a heavy hit holds the fight a moment of real time (not caught up after)
+    s.last_sim = now;
+    return;
+  }
   s.accumulator =
       std::min(s.accumulator + time_scale(s.panel) * std::chrono::duration<double>(now - s.last_sim).count(), kMaxCatchUp);
   s.last_sim = now;
@@ -507,6 +518,16 @@ void step_simulation(WindowRun& s) {
     s.times.sim.ms.push_back(std::chrono::duration<double, std::milli>(clock_type::now() - t0).count());
     s.accumulator -= 1.0 / 60.0;
     ++s.frames;
+  }
+  // The frame's new hits: the heaviest sets the hit-stop.
+  double stop = 0.0;
+  for (const Interaction::Flash& fl : w.interaction->flashes)
+    if (fl.t > s.hits_read_to) stop = std::max(stop, hit_stop_seconds(fl));
+  s.hits_read_to = w.data.time;
+  if (stop > 0.0) {
+    s.hit_stop_until = clock_type::now() + std::chrono::duration_cast<clock_type::duration>(std::chrono::duration<double>(stop));
+    ++s.hit_stops;
+    s.hit_stop_max_s = std::max(s.hit_stop_max_s, stop);
   }
   if (s.o.seconds > 0 && w.data.time >= s.o.seconds) s.win.request_close();
 }
@@ -597,6 +618,8 @@ bool render_frame(WindowRun& s, const FrameInput& in) {
   } else {
     fill_frame(w, s.view, s.f);
     s.f.camera = in.cam;
+    const glm::vec3 shake = camera_shake(*w.interaction, w.data.time);  // heavy hits shake it (hit_feedback.h)
+    s.f.camera.eye += shake, s.f.camera.target += shake;
   }
   s.f.overlay = s.ui_visible || s.front.screen != Screen::Playing;  // --no-overlay hides no menu
   if (auto ok = s.r.render(s.f); !ok) {
@@ -662,6 +685,8 @@ int finish_windowed(WindowRun& s) {
                          {"debug_overlay", s.overlay},
                          {"physics_paused", s.panel.paused},
                          {"time_scale", time_scale_name(s.panel)},
+                         {"hit_stops", s.hit_stops},
+                         {"hit_stop_max_ms", 1000.0 * s.hit_stop_max_s},
                          {"log", s.log}};
   if (auto ok = write_report(s.o.report, report); !ok) {
     std::fprintf(stderr, "%s\n", ok.error().c_str());

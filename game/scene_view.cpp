@@ -5,6 +5,7 @@
 #include "engine/control/biped/capture_point.h"
 #include "engine/control/biped/support_polygon.h"
 #include "engine/physics/dynamics.h"
+#include "game/hit_feedback.h"
 #include "game/interaction/interaction.h"
 #include "game/stance_ik.h"
 
@@ -97,13 +98,8 @@ void draw_debug(const World& w, const DebugDrawFlags& dbg, eng::render::FrameDes
       f.lines.push_back({glm::vec3(float(com.x()), float(com.y()), gz), at, glm::vec4(1.0f, 0.25f, 0.85f, 1.0f)});
     }
   }
-  if (dbg.hits)
-    for (const Interaction::Flash& fl : w.interaction->flashes) {
-      const double age = d.time - fl.t;
-      if (age < 0.0 || age > 0.35) continue;
-      const float k = float(1.0 - age / 0.35);
-      f.points.push_back({gv(fl.point), float(8.0 + 5.0 * std::min(fl.speed, 8.0)) * k, glm::vec4(1.0f, 0.9f, 0.3f, 1.0f)});
-  }
+  if (dbg.hits)  // sparks that leave the hit, sized by its impulse (hit_feedback.h)
+    for (const Interaction::Flash& fl : w.interaction->flashes) hit_sparks(fl, d.time, f);
 }
 
 // A box of the unit cube mesh stretched from a to b, `thick` m square across (a rope's segment, a post).

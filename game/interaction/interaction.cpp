@@ -337,7 +337,7 @@ void interaction_after_step(World& w) {
     const bool boxer_hit = (in.owners[hit.body_a].boxer >= 0 || in.owners[hit.body_b].boxer >= 0) &&
                            hit.body_a > 0 && hit.body_b > 0 && in.owners[hit.body_a].boxer != in.owners[hit.body_b].boxer;
     if (boxer_hit && hit.approach_speed > 1.0) {
-      in.flashes[in.next_flash] = {w.data.time, hit.point, hit.approach_speed};
+      in.flashes[in.next_flash] = {w.data.time, hit.point, hit.approach_speed, hit.normal, hit.impulse};
       in.next_flash = (in.next_flash + 1) % int(in.flashes.size());
     }
     for (int side = 0; side < 2; ++side) {

@@ -102,6 +102,8 @@ struct Interaction {
     double t = -1e9;
     Eigen::Vector3d point = Eigen::Vector3d::Zero();
     double speed = 0.0;
+    Eigen::Vector3d normal = Eigen::Vector3d::Zero();  // the contact's, from a to b
+    double impulse = 0.0;                              // N s, the pair's normal impulse that step
   };
   std::array<Flash, 16> flashes;
   int next_flash = 0;
