@@ -24,6 +24,7 @@
 #include "game/hud.h"
 #include "game/interaction/mouse_hands.h"
 #include "game/match/match.h"
+#include "game/scenarios/scenario_hooks.h"
 #include "game/scene_view.h"
 #include "game/world.h"
 
@@ -591,6 +592,7 @@ void draw_panels(WindowRun& s) {
     if (!s.panel.open) s.log.push_back("panel closed");  // its title bar's arrow
   }
   if (playing) draw_key_hints(key_hints(w), fonts.medium);
+  if (playing && s.ui_visible && !w.match->active) draw_caption(scenario_caption(w), fonts.medium);  // says what it is
   FrontAction chosen = FrontAction::None;
   if (s.front.screen == Screen::Title) chosen = draw_title(s.front, fonts);
   if (s.front.screen == Screen::Paused) chosen = draw_pause_menu(s.front, fonts);

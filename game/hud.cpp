@@ -137,4 +137,15 @@ void draw_key_hints(const std::string& text, ImFont* font) {
            text.c_str());
 }
 
+void draw_caption(const std::string& text, ImFont* font) {
+  if (text.empty()) return;
+  const ImGuiIO& io = ImGui::GetIO();
+  ImDrawList* dl = ImGui::GetBackgroundDrawList();
+  const float size = font ? font->FontSize : ImGui::GetFontSize();
+  const float w = hud_text_width(font, text.c_str()), x = 0.5f * io.DisplaySize.x;
+  dl->AddRectFilled(ImVec2(x - 0.5f * w - 12.0f, 8.0f), ImVec2(x + 0.5f * w + 12.0f, 8.0f + size + 12.0f),
+                    IM_COL32(30, 32, 38, 190), 6.0f);
+  hud_text(dl, font, x, 14.0f, 0.5f, IM_COL32(245, 245, 235, 255), text.c_str());
+}
+
 }  // namespace boxing

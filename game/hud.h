@@ -56,6 +56,8 @@ float hud_text_width(ImFont* font, const char* text);
 void hud_text(ImDrawList* dl, ImFont* font, float x, float y, float align_x, unsigned colour, const char* text);
 // One line of key hints along the bottom of the screen (dim, small), e.g. "Esc menu   Tab physics panel".
 void draw_key_hints(const std::string& line, ImFont* font);
+// A scenario's caption (scenario_caption), at the top of the screen on a dark band.
+void draw_caption(const std::string& text, ImFont* font);
 // The bout's end for the result screen: who won and how, and per round the judges' cards and the punches.
 struct BoutSummary {
   std::string name[2] = {"RED", "BLUE"};

@@ -119,6 +119,9 @@ const ScenarioHooks kImpactsScenario = {
     .place = impacts_place,
     .after_step = impacts_after_step,
     .report = impacts_report,
+    .caption = [](const World&) -> std::string {
+      return "IMPACTS (the paper's Fig. 7): world space, person space, a root spring; balls, then a crate";
+    },
 };
 
 }  // namespace boxing

@@ -2,7 +2,9 @@
 // pushed at the chest (--push-force N for --push-duration s from --push-at s, direction --push-dir in its heading
 // frame, 0 = where it faces: a push from behind). Alone: a recovery's steps have the platform to themselves (with
 // the second boxer on its stance a push from behind stepped boxer 0 into it).
+#include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "engine/physics/step.h"
 #include "engine/physics/dynamics.h"
@@ -15,8 +17,29 @@ namespace {
 // The trace keeps the first minute (a window left open does not grow it without bound), reserved at setup.
 constexpr size_t kTraceSamples = 120 * 60;
 
+// Without --push-force the lab pushes on its own (issue 64: it did nothing without flags): every kTimerEvery seconds
+// a kTimerForce N chest push for kTimerDuration s, its direction turning 45 degrees each time (the eight of the push
+// lab's grid). 180 N: seeds 1-6 stand through all eight (36 s); at 250 N seeds 1 and 4 fell to the push from
+// behind-right (Yin's bars, 300-413 N, are for the pushes straight from the front, back and sides).
+constexpr double kTimerEvery = 4.0, kTimerForce = 180.0, kTimerDuration = 0.2;
+
+// The timer's push under way at time t: its number (0, 1, ...), or -1 between pushes.
+int timer_push(double t) {
+  const int k = int(std::floor(t / kTimerEvery)) - 1;  // the first at kTimerEvery
+  return k >= 0 && t - (k + 1) * kTimerEvery < kTimerDuration ? k : -1;
+}
+
 void push_before_step(World& w) {
   const Options& o = w.options;
+  if (!w.boxers.empty() && o.push_force <= 0 && timer_push(w.data.time) >= 0) {
+    const Boxer& b = w.boxers[0];
+    const double a = b.stance.heading + 45.0 * timer_push(w.data.time) * M_PI / 180.0;
+    const int chest = b.bodies.body[w.boxer_desc.skeleton.find("chest")];
+    eng::physics::apply_force_at_point(w.model, w.data, chest, kTimerForce * Eigen::Vector3d(std::cos(a), std::sin(a), 0.0),
+                                       w.data.com_world[chest]);
+    w.push_active = true;
+    return;
+  }
   if (!w.boxers.empty() && o.push_force > 0 && w.data.time >= o.push_at && w.data.time < o.push_at + o.push_duration) {
     const Boxer& b = w.boxers[0];
     const double a = b.stance.heading + o.push_dir_deg * M_PI / 180.0;
@@ -86,6 +109,14 @@ const ScenarioHooks kPushScenario = {
     .before_step = push_before_step,
     .after_step = push_after_step,
     .report = push_report,
+    .caption = [](const World& w) -> std::string {
+      if (w.options.push_force > 0) return "PUSH LAB: one chest push, as --push-force, --push-dir and --push-at set it";
+      // 0 degrees pushes along the heading (from behind), +45 turns the force to the left: from behind-right.
+      static const char* const kDir[] = {"from behind", "from behind-right", "from the right", "from front-right",
+                                         "from the front", "from front-left", "from the left", "from behind-left"};
+      const int next = std::max(0, int(std::floor(w.data.time / kTimerEvery)));
+      return "PUSH LAB: a 180 N push every 4 s, 45 degrees on each time. Next: " + std::string(kDir[next % 8]);
+    },
 };
 
 }  // namespace boxing

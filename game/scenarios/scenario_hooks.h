@@ -6,8 +6,10 @@
 //   before_step  each tick after the boxers' control, before the physics step (external forces)
 //   after_step   each tick after the physics step and the measurements
 //   report       adds the scenario's own block to the report
+//   caption      what the scenario is and does, one line, shown in the window (issue 64: every scenario names itself)
 // One file per scenario in game/scenarios/.
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "game/scenario.h"
 
@@ -24,7 +26,11 @@ struct ScenarioHooks {
   void (*before_step)(World& w) = nullptr;
   void (*after_step)(World& w) = nullptr;
   void (*report)(const World& w, nlohmann::json& r) = nullptr;
+  std::string (*caption)(const World& w) = nullptr;
 };
+
+// The window's caption for the world's scenario ("" for none: the match has its broadcast HUD).
+std::string scenario_caption(const World& w);
 
 const ScenarioHooks& scenario_hooks(Scenario s);
 

@@ -7,6 +7,9 @@ const ScenarioHooks kStandScenario = {
     .walks_graph = false,
     .setup = [](World& w, Rng&) { setup_boxers_on_stances(w, 2); },
     .place = place_boxers_on_stances,
+    .caption = [](const World&) -> std::string {
+      return "STAND (the hands-on lab): drag a boxer, throw balls (T) and crates (Y) at it";
+    },
 };
 
 }  // namespace boxing
