@@ -54,9 +54,15 @@ TEST(Arena, RingIsFiveMetresInsideWithWalkableStepsAndMarksApart) {
       for (double y = -2.75; y <= 2.76; y += 0.5) {
         const double h = a.top_at(x, y);
         EXPECT_GT(h, kFloorTop);
-        if (std::abs(x) < 2.5 && std::abs(y) < 2.5) EXPECT_NEAR(h, 0.30, 0.04 + 1e-9) << "seed " << seed;
-        if (x + 0.5 < 2.76) EXPECT_LE(std::abs(a.top_at(x + 0.5, y) - h), 0.08 + 1e-9) << x << "," << y;
-        if (y + 0.5 < 2.76) EXPECT_LE(std::abs(a.top_at(x, y + 0.5) - h), 0.08 + 1e-9) << x << "," << y;
+        if (std::abs(x) < 2.5 && std::abs(y) < 2.5) {
+          EXPECT_NEAR(h, 0.30, 0.04 + 1e-9) << "seed " << seed;
+        }
+        if (x + 0.5 < 2.76) {
+          EXPECT_LE(std::abs(a.top_at(x + 0.5, y) - h), 0.08 + 1e-9) << x << "," << y;
+        }
+        if (y + 0.5 < 2.76) {
+          EXPECT_LE(std::abs(a.top_at(x, y + 0.5) - h), 0.08 + 1e-9) << x << "," << y;
+        }
       }
     EXPECT_GE((a.stances[0].position - a.stances[1].position).norm(), 2.5);
     for (const Stance& s : a.stances) {

@@ -35,7 +35,9 @@ TEST(MatchFootwork, ReportHasTheFootworkFieldsAndTheyAreSane) {
     EXPECT_GE(f["rope_contacts_s"].get<double>(), 0.0);
   }
   for (const auto& g : m["getups"])
-    if (!g["count_distance_min_m"].is_null()) EXPECT_GE(g["count_distance_min_m"].get<double>(), 0.0);
+    if (!g["count_distance_min_m"].is_null()) {
+      EXPECT_GE(g["count_distance_min_m"].get<double>(), 0.0);
+    }
 }
 
 // The teleport detector sees a pose set directly: a boxer moved 1 m by set_character_pose mid-match counts once (a

@@ -168,7 +168,9 @@ TEST(MatchRules, AStandingOpponentWalksToANeutralCornerWhileTheOtherIsDown) {
   EXPECT_EQ(mt.teleports, 0);
   ASSERT_FALSE(mt.getups.empty());
   const GetUp& g = mt.getups.front();
-  if (g.count_from >= 0.0) EXPECT_GE(g.count_from, down_at);
+  if (g.count_from >= 0.0) {
+    EXPECT_GE(g.count_from, down_at);
+  }
 }
 
 // The count runs only while the standing boxer is count_when_away from the downed one: with that distance out of
