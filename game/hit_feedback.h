@@ -17,8 +17,8 @@ namespace boxing {
 
 struct HitFeedbackTuning {
   // A hit's weight: its first step's normal impulse over heavy_impulse or its closing speed over heavy_speed, whichever
-  // is more (a punch's impulse builds over several steps: seed 3's 10.5 N s cross gave 2.0 N s in its first step, at
-  // 8.3 m/s; per-step impulses of the fight's hits are 0.2-5 N s). A weight of 1 or more is a heavy hit.
+  // is more. The speed is there because a punch's impulse builds over several steps, so its first step alone
+  // understates a hard punch (docs/decisions/readable-hits.md). A weight of 1 or more is a heavy hit.
   double heavy_impulse = 4.0;    // N s
   double heavy_speed = 6.5;      // m/s (the fight's landed fists: median 6.9 m/s)
   double max_stop_s = 0.06;      // s of real time

@@ -39,8 +39,8 @@ struct SoundLevel {
 float sound_gain(const SoundLevel& s, double impulse);
 
 struct SoundTuning {
-  // Per SoundKind (GloveOnHead, GloveOnBody, GloveOnGlove, BodyOnCrate, Footstep, Bell). The references are near the
-  // median impulse of each kind (seeds 1-5, 60 s: docs/guide/audio.md), so a typical event plays near its level.
+  // Per SoundKind (GloveOnHead, GloveOnBody, GloveOnGlove, BodyOnCrate, Footstep, Bell). Each reference is a typical
+  // impulse of its kind, so a typical event plays near its level (how they were chosen: docs/guide/audio.md).
   std::array<SoundLevel, kSoundKinds> levels{{{8.0, 0.8f, 4.0, 0.1},  // glove on head: landed punch, N s over 50 ms
                                               {8.0, 0.8f, 4.0, 0.1},  // glove on body
                                               {1.5, 0.35f, 3.0},   // glove on glove: the hit's first-step impulse

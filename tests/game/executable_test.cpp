@@ -8,28 +8,12 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "support/run_boxing.h"
 #include "support/vulkan_test_env.h"
 #include "test_paths.h"
 
-namespace {
-
-struct ExeRun {
-  int code;
-  std::string output;
-};
-
-ExeRun run_boxing(const std::string& args) {
-  boxing_test::pin_lavapipe_env();
-  const std::string cmd = std::string(BOXING_BINARY_DIR) + "/boxing " + args + " 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
-  std::string out;
-  char buf[512];
-  while (p && fgets(buf, sizeof buf, p)) out += buf;
-  const int status = p ? pclose(p) : -1;
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
-}
-
-}  // namespace
+using boxing_test::ExeRun;
+using boxing_test::run_boxing;
 
 TEST(Executable, BadFlagIsOneLineAndExitCode2) {
   const ExeRun r = run_boxing("--frobnicate");
