@@ -16,7 +16,8 @@
 //   clear   {}                      removes the thrown objects
 //   push    {"boxer": 0, "bone": "chest", "force": [x, y, z], "duration": 0.1}   (N, world, at the bone's com)
 //   key     {"action": "jab", "boxer": 0}   a fight key (jab cross lead_hook rear_hook lead_uppercut
-//           rear_uppercut block slip_left slip_right duck step_forward step_back); the boxer becomes the player's
+//           rear_uppercut block slip_left slip_right duck step_forward step_back step_left step_right pivot_left
+//           pivot_right); the boxer becomes the player's
 //   set     {"boxer": 0, "servo": "world" | "person" | "parent", "balance": "qp" | "pd", "omega_n": 15,
 //            "root_spring": "on" | "off", "root_limit": 400, "control": "ai" | "player", "consciousness": 1.0}
 //           (any subset): the panel's settings
@@ -33,7 +34,8 @@ namespace boxing {
 // The fight keys' actions, in FightCommand's order (game/match/match.h: FightCommand(i + 1)).
 inline constexpr const char* kKeyActions[] = {"jab",   "cross",     "lead_hook",  "rear_hook",   "lead_uppercut",
                                               "rear_uppercut", "block", "slip_left", "slip_right", "duck",
-                                              "step_forward",  "step_back"};
+                                              "step_forward",  "step_back", "step_left",  "step_right",
+                                              "pivot_left",    "pivot_right"};
 inline constexpr int kKeyActionCount = sizeof(kKeyActions) / sizeof(kKeyActions[0]);
 
 enum class InputKind : uint8_t { Drag, Grab, Move, Release, Throw, Clear, Push, Key, Set };

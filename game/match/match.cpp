@@ -1,6 +1,7 @@
 #include "game/match/match.h"
 
 #include <algorithm>
+#include <utility>
 
 #include "engine/anim/motion_graph.h"
 #include "game/footwork.h"
@@ -15,16 +16,30 @@ namespace {
 
 using eng::anim::Clip;
 
+// A footwork command's move and turn (rad, + left): a pivot turns the stance by the most a move may
+// (FootworkTuning::max_turn clamps it); None for the graph's commands.
+std::pair<FootworkMove, double> fight_command_move(FightCommand c) {
+  constexpr double kPivot = 0.5;
+  switch (c) {
+    case FightCommand::StepForward: return {FootworkMove::Forward, 0.0};
+    case FightCommand::StepBack: return {FootworkMove::Back, 0.0};
+    case FightCommand::StepLeft: return {FootworkMove::Left, 0.0};
+    case FightCommand::StepRight: return {FootworkMove::Right, 0.0};
+    case FightCommand::PivotLeft: return {FootworkMove::Pivot, kPivot};
+    case FightCommand::PivotRight: return {FootworkMove::Pivot, -kPivot};
+    default: return {FootworkMove::None, 0.0};
+  }
+}
+
 // The player's next command, taken when the boxer stands and the walk is free of a plan (a punch asked for during
 // another is taken once that one lets the graph go, like a buffered input in a fighting game).
 void take_player_command(MatchFighter& f, Boxer& b, eng::anim::GraphWalker& walker, bool can) {
   if (f.queued > 0 && can && !walker.has_plan()) {
     // Steps are footwork moves (footwork.h: the balance steps carry the feet); the rest are the graph's clips.
     const FightCommand c = f.commands[0];
-    if (c == FightCommand::StepForward || c == FightCommand::StepBack) {
+    if (const auto [move, turn] = fight_command_move(c); move != FootworkMove::None) {
       if (footwork_busy(b)) return;  // (kept queued until the move under way ends)
-      if (request_footwork(b, c == FightCommand::StepForward ? FootworkMove::Forward : FootworkMove::Back, 0.0))
-        ++f.commands_taken;
+      if (request_footwork(b, move, turn)) ++f.commands_taken;
     } else if (walker.request_clip(fight_command_clip(c))) {
       ++f.commands_taken;
     }
@@ -51,6 +66,10 @@ const char* fight_command_clip(FightCommand c) {
     case FightCommand::Duck: return "duck";
     case FightCommand::StepForward: return "step_forward";
     case FightCommand::StepBack: return "step_back";
+    case FightCommand::StepLeft: return "step_left";
+    case FightCommand::StepRight: return "step_right";
+    case FightCommand::PivotLeft: return "pivot_left";
+    case FightCommand::PivotRight: return "pivot_right";
   }
   return "";
 }

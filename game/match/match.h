@@ -174,7 +174,7 @@ struct GetUp {
 // the AI's requests (when the walk can: in guard, standing).
 enum class FightCommand : uint8_t {
   None, Jab, Cross, LeadHook, RearHook, LeadUppercut, RearUppercut, Block, SlipLeft, SlipRight, Duck, StepForward,
-  StepBack
+  StepBack, StepLeft, StepRight, PivotLeft, PivotRight
 };
 const char* fight_command_clip(FightCommand c);  // the clip it asks for ("" for None)
 
