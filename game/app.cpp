@@ -189,7 +189,7 @@ eng::Result<HeadlessRun> run_headless(const Options& o) {
     if (audio)
       if (auto ok = game_audio_update(*audio, w); !ok) return eng::make_error(ok.error());
     const bool last = frame == frames;
-    const bool every = o.render_every > 0 && frame % o.render_every == 0;
+    const bool every = o.render_every > 0 && frame % o.render_every == 0 && frame >= o.frames_from * 60.0;
     if (!last && !every) continue;
     const auto t1 = clock_type::now();
     const double c1 = process_cpu_ms();

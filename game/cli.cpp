@@ -229,6 +229,8 @@ const std::vector<Flag> kFlags = {
     {{"--frames-dir"}, "DIR", path(&Options::frames_dir), "headless: write each rendered frame as DIR/frame_NNNNN.png"},
     {{"--render-every"}, "N", integer(&Options::render_every, 0, 1000000, "a non-negative integer"),
      "headless: render every Nth 60 Hz frame (default 0 = the last frame only)"},
+    {{"--frames-from"}, "S", number(&Options::frames_from, 0.0, 86400.0, "a number from 0 to 86400"),
+     "headless: --render-every starts at S seconds of simulation (default 0)"},
     {{"--overlay"}, nullptr,
      [](const std::string&, const std::string&, Options& o) -> Check {
        o.overlay = o.overlay_given = true;

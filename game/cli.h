@@ -35,6 +35,7 @@ struct Options {
   std::string content_dir;             // where content/ lives (default: the source tree's content/)
   std::string frames_dir;              // headless: write every rendered frame here as PNG
   int render_every = 0;                // headless: render every Nth display frame (0 = only the last)
+  double frames_from = 0.0;            // headless: ... from this simulation time (s) on
   bool validation = true;              // Khronos validation layer (default on; errors make tests fail)
   bool overlay = true;                 // ImGui overlay in the window (off in headless screenshots unless asked)
   bool overlay_given = false;

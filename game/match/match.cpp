@@ -173,6 +173,7 @@ void match_after_step(World& w) {
   read_hits(w);
   count_balance_steps_after_hit(w);
   referee(w);
+  measure_clinch(w);
   bout_tick(w);
   measure_footwork(w);
 }

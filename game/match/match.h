@@ -27,6 +27,7 @@
 #include "game/hud.h"
 #include "game/match/body_parts.h"
 #include "game/match/bout.h"
+#include "game/match/clinch.h"
 #include "game/match/fighter_ai.h"
 #include "game/match/fighter_view.h"
 #include "game/match/footwork_ai.h"
@@ -131,6 +132,7 @@ struct MatchTuning {
   double trunk_weight = 100.0;
   double com_weight = 30.0;
   FootworkAiTuning footwork;  // the AI's steps in the ring (footwork_ai.h)
+  double clinch_within = 0.45;  // m, reach_distance under which the boxers are locked (clinch.h)
 };
 
 struct PunchEvent {
@@ -240,6 +242,7 @@ struct Match {
   FootworkMetricsTuning footwork_tuning;
   ReplayBuffer replay;  // the last kReplaySeconds of the bodies' coordinates at 60 Hz (the window's instant replay)
   Bout bout;           // the rounds, the judges' cards, the result (bout.h)
+  ClinchMetrics clinch;  // the time the boxers spend locked together (clinch.h)
 };
 
 // After the boxers exist (scenario setup + place): the body map, the AI styles (seeded), consciousness dynamics.

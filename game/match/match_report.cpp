@@ -194,6 +194,8 @@ nlohmann::json match_report(const World& w) {
           {"ended_at_s", w.data.time},  // the run's end: a knockdown less than the count before it has no up_at_s yet
           {"getups", getups},
           {"teleports", mt.teleports},
+          // the time the boxers were locked at a forearm's length (clinch.h)
+          {"clinch", {{"locked_s", mt.clinch.locked_s}, {"longest_s", mt.clinch.longest_s}}},
           {"fighters", footwork_report(w)},
           {"result", result},
           {"result_text", result_text},

@@ -60,3 +60,29 @@ TEST(MatchFootwork, APoseSetDirectlyCountsAsATeleport) {
   EXPECT_EQ(w.match->footwork[1].teleports, 1);
   EXPECT_LT(w.match->footwork[1].path_m - path_before, 0.5);  // the 1 m jump is not in the path
 }
+
+// The clinch's clock (game/match/clinch.h): boxers started at their marks (2.8 m apart) are not locked in the first
+// second; boxers started chest to chest (0.4 m) are, every tick they both stand in it, and the longest lock is no
+// longer than the time locked in all.
+TEST(MatchFootwork, TheClinchClockRunsOnlyWhileTheBoxersStandLocked) {
+  for (const double apart : {2.8, 0.4}) {
+    Options o;
+    o.headless = true;
+    o.scenario_id = Scenario::Match;
+    o.seed = 3;
+    o.start_apart = apart;
+    auto made = make_world(o);
+    ASSERT_TRUE(made) << made.error();
+    World& w = **made;
+    for (int i = 0; i < 120; ++i) step_world(w);  // 0.5 s: before either boxer's first punch or step (1 s in)
+    const ClinchMetrics& c = w.match->clinch;
+    EXPECT_LE(c.longest_s, c.locked_s + 1e-12);
+    if (apart > 2.0) {
+      EXPECT_EQ(c.locked_s, 0.0);
+    } else {
+      EXPECT_NEAR(c.locked_s, 0.5, kPhysicsDt + 1e-9);  // every tick of the half second (both stand from the start)
+      EXPECT_NEAR(c.longest_s, c.locked_s, 1e-12);
+    }
+    EXPECT_GE(match_report(w)["clinch"]["locked_s"].get<double>(), 0.0);
+  }
+}
