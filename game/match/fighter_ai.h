@@ -90,7 +90,7 @@ struct FighterAi {
   const char* defend_with = nullptr;
   double defend_until = -1.0;  // s, the defence asked for again until then (FighterAiTuning::defence_patience)
   int countered = -1;          // the opponent's last missed punch (Match::events index) a counter was weighed for
-  int counters = 0;            // counters thrown (the report's)
+  int counters = 0;            // counters thrown (for tests and debugging)
   const char* last_request = nullptr;  // the clip last asked for (for the report / tests)
   bool aim_body = false;               // the next / current punch goes to the torso
   std::array<int, kPunchClips.size()> thrown_of{}, landed_of{};  // per punch, in this match (the match counts them)
