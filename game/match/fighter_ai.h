@@ -54,12 +54,25 @@ struct FighterAiTuning {
   double min_attack_rate = 1e-3;   // attempts/s at the least (a stunned boxer's scaled rate, never 0)
   // s: the first attempt at first_attack plus up to first_attack_spread (both settle into guard first)
   double first_attack = 1.0, first_attack_spread = 1.0;
+  // s a defence decided on but not startable then (a footwork move's feet still moving, the boxer's own punch about
+  // to start) is asked for again each tick: without it 11 of 11 defences decided in a 60 s fight were dropped
+  // (seed 5: the feet busy or a punch planned at the decision's tick; docs/decisions/defence-motions.md).
+  double defence_patience = 0.3;
+  // The chance of a counter: the opponent's punch over without landing (missed, blocked, slipped), a punch at once
+  // when free and in range, the attack's wait skipped (0: never; hard's habit, docs/decisions/ai-levels.md).
+  double counter_chance = 0.0;
+  // The footwork's habits (FootworkAiTuning, scaled per boxer): the share of punches followed by a step out or off
+  // the line, and the lateral moves' rate at range (1: the match's as tuned; easy's fewer).
+  double exit_scale = 1.0, circle_scale = 1.0;
 };
 
-// The AI's level (--ai, the title screen): easy and hard move the ranges a style is drawn from; normal leaves the
-// tuning as it is, so the fight at normal is the tuned one bit for bit (the same draws from the same seed). Easy: 0.6x
-// the aggression, half the defence, 0.1 s slower; hard: 1.25x the aggression, 1.4x the defence, 0.03 s quicker (still
-// within trained athletes' 0.15-0.25 s). Chosen, not measured: docs/decisions/front-end.md. false: not a level.
+// The AI's level (--ai, the title screen): easy and hard move the ranges a style is drawn from and the habits; normal
+// leaves the tuning as it is, so the fight at normal is the tuned one bit for bit (the same draws from the same seed).
+// Easy: 0.35x the aggression, 0.3x the defence, 0.1 s slower, a predictable repertoire (one favourite weighted far
+// up, half the combinations), no steps out after its punches and few lateral moves (it stays in range). Hard: 1.5x
+// the aggression, 1.8x the defence, 0.03 s quicker (still within trained athletes' 0.15-0.25 s), 1.5x the
+// combinations, counters after a punch of the opponent's misses; its footwork as tuned (more steps cost it punches).
+// Measured, hard beats easy on 20 of 20 bouts: docs/decisions/ai-levels.md. false: not a level.
 bool apply_ai_level(FighterAiTuning& t, const std::string& level);
 
 // A style drawn from the seed within FighterAiTuning's ranges (aggression, combinations, defence, reaction, body
@@ -75,6 +88,9 @@ struct FighterAi {
   double defend_at = -1.0;    // s, a defence asked for at this time (< 0 none)
   double next_step = 0.0;     // s, the earliest next footwork request
   const char* defend_with = nullptr;
+  double defend_until = -1.0;  // s, the defence asked for again until then (FighterAiTuning::defence_patience)
+  int countered = -1;          // the opponent's last missed punch (Match::events index) a counter was weighed for
+  int counters = 0;            // counters thrown (for tests and debugging)
   const char* last_request = nullptr;  // the clip last asked for (for the report / tests)
   bool aim_body = false;               // the next / current punch goes to the torso
   std::array<int, kPunchClips.size()> thrown_of{}, landed_of{};  // per punch, in this match (the match counts them)
@@ -99,6 +115,11 @@ struct FighterView {
   bool feet_busy = false;
   bool press = false;          // the other boxer was just rocked back: step in after him at once (not at the cadence)
   const char* other_started = nullptr;  // the punch the other boxer started this tick (nullptr: none)
+  bool other_to_body = false;  // ... aimed at the torso (a low block for it)
+  // Standing in guard with no punch and no footwork move under way: a defence can start (a planned punch or step of
+  // its own gives way to it).
+  bool can_defend = false;
+  int other_missed = -1;  // the other boxer's last punch (Match::events index) if it is over and did not land (-1)
   double slow = 1.0;           // attempts rate scale (a stunned boxer punches less)
 };
 

@@ -80,6 +80,16 @@ FighterView fighter_view(const World& w, int k, const Clip& c, bool standing) {
   const auto& bst = b.ctl.balance_steps;
   v.feet_busy = bst.step.active || bst.recovering || bst.shifting >= 0 || footwork_busy(b) || !stance_can_fight(w.data, b);
   v.other_started = f.saw_punch;
+  const MatchFighter& fo = mt.fighter[1 - k];
+  if (f.saw_punch && fo.open_punch >= 0) v.other_to_body = mt.events[fo.open_punch].target == "torso";
+  v.can_defend = standing && c.has_tag("guard") && !footwork_busy(b);
+  // The other's last punch, over and not landed (the events are in time order: the last of his is the nearest).
+  if (fo.open_punch < 0 && fo.thrown > 0)
+    for (int i = static_cast<int>(mt.events.size()) - 1; i >= 0; --i)
+      if (mt.events[i].boxer == 1 - k) {
+        if (!mt.events[i].landed) v.other_missed = i;
+        break;
+      }
   v.slow = b.ctl.state.state == BoxerState::Stunned ? mt.tuning.stunned_attack_scale : 1.0;
   return v;
 }

@@ -172,12 +172,12 @@ bool footwork_ai_tick(World& w, int k, bool free, bool just_punched) {
       m = FootworkMove::Forward;
     } else if (dist < reach - t.band_in) {
       m = f.ai.rng.uniform() < 0.6 ? FootworkMove::Back : circle_move(w, k, heading);
-    } else if (just_punched && f.ai.rng.uniform() < t.exit_share) {
+    } else if (just_punched && f.ai.rng.uniform() < t.exit_share * f.ai.tuning.exit_scale) {
       m = f.ai.rng.uniform() < 0.5 ? FootworkMove::Back : circle_move(w, k, heading);
     } else if (std::abs(turn) > t.face_within) {
       m = FootworkMove::Pivot;
     } else if (now - f.last_move_end > t.max_still ||
-               f.ai.rng.uniform() < 1.0 - std::exp(-t.circle_rate * (now - f.last_move_end))) {
+               f.ai.rng.uniform() < 1.0 - std::exp(-t.circle_rate * f.ai.tuning.circle_scale * (now - f.last_move_end))) {
       m = circle_move(w, k, heading);
     }
     if (m != FootworkMove::None && m != FootworkMove::Pivot && !stays_inside(w, k, m, heading + turn))

@@ -167,6 +167,7 @@ void match_after_step(World& w) {
   if (!mt.active || w.boxers.size() < 2) return;
   const char* started[2];
   track_punches(w, started);
+  measure_defences(w);
   for (int k = 0; k < 2; ++k) mt.fighter[1 - k].saw_punch = started[k];
   if ((w.steps + 1) % kStepsPerFrame == 0) mt.replay.record(w.data.q, w.data.time);  // one per 60 Hz frame
   track_peak_speed(w);

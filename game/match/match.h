@@ -28,6 +28,7 @@
 #include "game/match/body_parts.h"
 #include "game/match/bout.h"
 #include "game/match/clinch.h"
+#include "game/match/defence_metrics.h"
 #include "game/match/fighter_ai.h"
 #include "game/match/fighter_view.h"
 #include "game/match/footwork_ai.h"
@@ -143,6 +144,7 @@ struct PunchEvent {
   bool landed = false, blocked = false;
   std::string hit_part;   // what it touched first: head | torso | glove | arm ("" = missed)
   std::string other_clip;  // what the opponent was doing then (its clip)
+  std::string defence;     // the defence clip the opponent was in before the first touch ("" none: defence_metrics.h)
   double speed = 0.0;     // m/s, approach speed at the first touch (along the contact normal: what lands it)
   double fist_speed = 0.0;  // m/s, the glove's speed (its centre, world) at the first touch: the fist speed at contact
   double peak_speed = 0.0;  // m/s, the striking glove's fastest over the punch (world)
@@ -243,6 +245,8 @@ struct Match {
   ReplayBuffer replay;  // the last kReplaySeconds of the bodies' coordinates at 60 Hz (the window's instant replay)
   Bout bout;           // the rounds, the judges' cards, the result (bout.h)
   ClinchMetrics clinch;  // the time the boxers spend locked together (clinch.h)
+  std::vector<DefenceMotion> defences;     // every defence as the bodies made it (defence_metrics.h)
+  std::array<DefenceTrack, 2> defence_track;
 };
 
 // After the boxers exist (scenario setup + place): the body map, the AI styles (seeded), consciousness dynamics.

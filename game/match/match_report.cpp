@@ -109,6 +109,7 @@ nlohmann::json match_report(const World& w) {
                       {"blocked", e.blocked},
                       {"hit", e.hit_part},
                       {"other_clip", e.other_clip},
+                      {"defence", e.defence},
                       {"speed", e.speed},
                       {"fist_speed", e.fist_speed},
                       {"peak_speed", e.peak_speed},
@@ -199,6 +200,7 @@ nlohmann::json match_report(const World& w) {
           {"fighters", footwork_report(w)},
           {"result", result},
           {"result_text", result_text},
+          {"defence", defence_report(w)},  // the defences as the bodies made them (defence_metrics.h)
           {"events", events}};
 }
 

@@ -25,7 +25,7 @@ namespace {
 const std::vector<std::string> kExpected = {
     "guard",         "jab",          "cross",        "lead_hook",     "rear_hook",  "lead_uppercut",
     "rear_uppercut", "combo_jab_cross", "slip_left", "slip_right",    "duck",       "block_high",
-    "step_forward",  "step_back",    "hit_head",     "hit_body",      "stagger",    "fall_back",
+    "block_low",     "step_forward",  "step_back",    "hit_head",     "hit_body",      "stagger",    "fall_back",
     "fall_forward",  "down_back",    "down_front",   "getup_back",    "getup_front"};
 
 std::string tmp_dir() {

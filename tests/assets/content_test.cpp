@@ -126,7 +126,7 @@ TEST(Content, ViewerGlbIsTheGameFilesMerged) {
   }
   // Every clip, by name, on the bone nodes of the same name, with the same keys and metadata.
   ASSERT_EQ(glb->animations.size(), clips->animations.size());
-  ASSERT_EQ(glb->animations.size(), 23u);
+  ASSERT_EQ(glb->animations.size(), 24u);
   for (size_t i = 0; i < glb->animations.size(); ++i) {
     const auto &a = glb->animations[i], &b = clips->animations[i];
     EXPECT_EQ(a.name, b.name);

@@ -112,7 +112,7 @@ TEST(AiLevel, NormalLeavesTheTuningAsItIsEasyAndHardMoveTheStyleRanges) {
   EXPECT_EQ(n.reaction_min, d.reaction_min);
   EXPECT_TRUE(apply_ai_level(e, "easy"));
   EXPECT_TRUE(apply_ai_level(h, "hard"));
-  EXPECT_LT(e.attack_rate_max, d.attack_rate_min);  // easy's busiest below normal's quietest (0.96 < 1.0 attempts/s)
+  EXPECT_LT(e.attack_rate_max, d.attack_rate_min);  // easy's busiest below normal's quietest (0.64 < 1.0 attempts/s)
   EXPECT_GT(h.attack_rate_max, d.attack_rate_max);
   EXPECT_LT(e.defence_max, d.defence_min + 0.05);
   EXPECT_GT(h.defence_min, d.defence_min);
