@@ -142,7 +142,7 @@ FrontAction draw_pause_menu(FrontEnd& fe, const HudFonts& f, const std::vector<s
   const float W = io.DisplaySize.x, H = io.DisplaySize.y, cx = 0.5f * W;
   ImDrawList* dl = begin_screen("##pause", 160);
   const float large = size_of(f.large), medium = size_of(f.medium);
-  float y = 0.06f * H;
+  float y = 0.15f * H;  // below the HUD's name plates and clock
   hud_text(dl, f.huge, cx, y, 0.5f, kWhite, "PAUSED");
   y += size_of(f.huge) + 20.0f;
   ground(dl, cx, y - 10.0f, 480.0f, 3.0f * (large + 14.0f) + 6.0f);
