@@ -641,7 +641,7 @@ std::string key_hints(const World& w) {
   if (w.match->active && versus)
     line += "   P1: WASD QE  R F V B Z X  L-Shift+WASD   P2: arrows  J K U I N M  R-Shift+arrows";
   else if (w.match->active && w.options.player >= 0)
-    line += "   WASD step  QE pivot  J K jab cross  U I hooks  N M uppercuts  Shift+W block  Shift+A/D slip  Shift+S duck";
+    line += "   WASD step  QE pivot  J K jab cross  U I hooks  N M uppercuts  Shift+WASD block slip duck";
   else if (!w.match->active) line += "   left-drag grab   T ball   Y crate   C camera";
   else line += "   C camera";
   return line;
