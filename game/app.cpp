@@ -22,6 +22,8 @@
 #include "game/front_end_screens.h"
 #include "game/hit_feedback.h"
 #include "game/hud.h"
+#include "game/interaction/fight_keys.h"
+#include "game/interaction/gamepad.h"
 #include "game/interaction/mouse_hands.h"
 #include "game/match/match.h"
 #include "game/scenarios/scenario_hooks.h"
@@ -253,12 +255,11 @@ struct OrbitCamera {
   }
 };
 
-// The player's keys in the match (README: Controls): each becomes a key input event (interaction.h).
-constexpr std::pair<int, const char*> kFightKeys[] = {
-    {GLFW_KEY_J, "jab"},           {GLFW_KEY_K, "cross"},        {GLFW_KEY_U, "lead_hook"},
-    {GLFW_KEY_I, "rear_hook"},     {GLFW_KEY_N, "lead_uppercut"}, {GLFW_KEY_M, "rear_uppercut"},
-    {GLFW_KEY_B, "block"},         {GLFW_KEY_A, "slip_left"},    {GLFW_KEY_D, "slip_right"},
-    {GLFW_KEY_S, "duck"},          {GLFW_KEY_W, "step_forward"}, {GLFW_KEY_X, "step_back"}};
+static_assert(unsigned(kHeldLeftShift) == eng::platform::Window::kHeldLeftShift &&
+                  unsigned(kHeldRightShift) == eng::platform::Window::kHeldRightShift &&
+                  unsigned(kHeldLeftCtrl) == eng::platform::Window::kHeldLeftCtrl &&
+                  unsigned(kHeldRightCtrl) == eng::platform::Window::kHeldRightCtrl,
+              "fight_keys.h's modifier bits are the window's");
 
 const char* const kCameras[] = {"default", "closeup", "side", "top"};  // the C key's cycle
 
@@ -301,6 +302,10 @@ struct WindowRun {
   Replay replay;
   Eigen::VectorXd live_q;  // the live coordinates while a replay shows recorded ones
   glm::dvec2 last_mouse;
+  // The gamepads (poll_pads): each one's state as read this frame and as last sent to the world (a pad event when
+  // they differ), and its name.
+  std::array<PadState, kMaxPads> pad_now{}, pad_sent{};
+  std::array<std::string, kMaxPads> pad_name;
 
   WindowRun(const Options& options, std::unique_ptr<World>& w, eng::platform::Window& window,
             eng::render::Renderer& renderer)
@@ -368,6 +373,7 @@ void start_world(WindowRun& s, const Options& options) {
   v.ghost = s.view.ghost, v.debug = s.view.debug;
   s.view = std::move(v);
   s.hands = MouseHands{};
+  s.pad_sent = {};  // the new world has heard of no pad: what is held now is sent again
   s.replay = {};
   s.accumulator = 0.0;
   s.hits_read_to = 0.0, s.hit_stop_until = {};
@@ -404,6 +410,14 @@ void carry_out(WindowRun& s, FrontAction a) {
   }
 }
 
+// A menu key (the keyboard's or a pad's) on the screen showing.
+void apply_menu_key(WindowRun& s, MenuKey k) {
+  const Screen was = s.front.screen;
+  const FrontAction a = front_end_key(s.front, k);
+  if (s.front.screen != was) s.log.push_back(screen_name(s.front.screen));
+  carry_out(s, a);
+}
+
 // The menus' keys on the title, the pause menu and the result; Esc while playing opens the pause menu.
 void handle_menu_keys(WindowRun& s) {
   constexpr std::pair<int, MenuKey> kMenuKeys[] = {
@@ -414,10 +428,7 @@ void handle_menu_keys(WindowRun& s) {
     for (const auto& [key, menu_key] : kMenuKeys) {
       if (key != pressed) continue;
       if (s.front.screen == Screen::Playing && menu_key != MenuKey::Back) continue;  // the arrows are not the game's
-      const Screen was = s.front.screen;
-      const FrontAction a = front_end_key(s.front, menu_key);
-      if (s.front.screen != was) s.log.push_back(screen_name(s.front.screen));
-      carry_out(s, a);
+      apply_menu_key(s, menu_key);
     }
 }
 
@@ -438,16 +449,22 @@ void handle_keys(WindowRun& s, const FrameInput& in) {
     s.camera_index = (s.camera_index + 1) % 4;
     s.orbit.from(camera_preset(kCameras[s.camera_index], w));
   }
-  // The fight keys: the first one takes over the red boxer (or the --player one) from the AI.
-  if (w.match->active)
-    for (const auto& [key, action] : kFightKeys)
-      if (win.key_pressed(key)) {
+  // The fight keys (fight_keys.h): each half of the keyboard drives its boxer (two players: left red, right blue;
+  // one: the player's whole keyboard); the first key takes that boxer over from the AI.
+  if (w.match->active) {
+    const bool versus = w.options.mode == "versus";
+    const int pads = pads_connected(*w.interaction);
+    const std::vector<int>& keys = win.keys_pressed();
+    const std::vector<unsigned>& held = win.keys_pressed_held();
+    for (size_t i = 0; i < keys.size(); ++i)
+      if (const FightKey* k = fight_key(keys[i], held[i])) {
         InputEvent e;
         e.kind = InputKind::Key;
-        e.action = action;
-        e.boxer = w.options.player >= 0 ? w.options.player : 0;
+        e.action = k->action;
+        e.boxer = key_boxer(k->half, pads, versus, w.options.player);
         interaction_submit(w, e);
       }
+  }
   // Throws from the camera toward the cursor; Backspace clears them.
   if (in.mouse_in && win.key_pressed(GLFW_KEY_T)) interaction_submit(w, throw_from_camera(w, in.ray, ObjectKind::Ball));
   if (in.mouse_in && win.key_pressed(GLFW_KEY_Y)) interaction_submit(w, throw_from_camera(w, in.ray, ObjectKind::Crate));
@@ -464,6 +481,69 @@ void handle_keys(WindowRun& s, const FrameInput& in) {
   if (s.panel.paused != before.paused) s.log.push_back(s.panel.paused ? "physics paused" : "physics running");
   if (s.panel.step_once && !before.step_once) s.log.push_back("one frame");
   if (s.panel.slow != before.slow) s.log.push_back(std::string("time ") + time_scale_name(s.panel));
+}
+
+// The gamepads, read every frame through GLFW's gamepad API (a pad plugged in or pulled out shows up here: the
+// hot-plug). Start pauses and resumes; off the fight the d-pad, A and B work the menus as the arrows, Enter and Esc
+// do. While a match plays, a pad whose state changed goes to the world as a pad event (gamepad.h maps it to fight
+// actions each physics step; --record writes it).
+void poll_pads(WindowRun& s) {
+  for (int jid = 0; jid < kMaxPads; ++jid) {
+    const eng::platform::GamepadReading g = eng::platform::read_gamepad(jid);
+    PadState now;
+    now.connected = g.connected;
+    for (int k = 0; k < kPadButtons; ++k) now.buttons[k] = g.buttons[k];
+    for (int k = 0; k < kPadAxes; ++k) now.axes[k] = g.axes[k];
+    const PadState was = s.pad_now[jid];
+    s.pad_now[jid] = now;
+    if (now.connected != was.connected) {
+      s.pad_name[jid] = g.name;
+      s.log.push_back("pad " + std::to_string(jid + 1) + (now.connected ? " connected: " + s.pad_name[jid] : " gone"));
+    }
+    auto pressed = [&](PadButton b) { return now.buttons[b] && !was.buttons[b]; };
+    if (s.front.screen == Screen::Playing) {
+      if (pressed(kPadStart)) apply_menu_key(s, MenuKey::Back);
+      continue;
+    }
+    constexpr std::pair<PadButton, MenuKey> kPadMenu[] = {
+        {kPadDpadUp, MenuKey::Up},     {kPadDpadDown, MenuKey::Down}, {kPadDpadLeft, MenuKey::Left},
+        {kPadDpadRight, MenuKey::Right}, {kPadA, MenuKey::Enter},       {kPadB, MenuKey::Back}};
+    for (const auto& [button, key] : kPadMenu)
+      if (pressed(button)) apply_menu_key(s, key);
+    if (pressed(kPadStart)) apply_menu_key(s, s.front.screen == Screen::Paused ? MenuKey::Back : MenuKey::Enter);
+  }
+  World& w = *s.world;
+  if (s.front.screen != Screen::Playing || !w.match->active) return;
+  for (int jid = 0; jid < kMaxPads; ++jid) {
+    if (s.pad_now[jid] == s.pad_sent[jid]) continue;
+    InputEvent e;
+    e.kind = InputKind::Pad;
+    e.pad = jid;
+    e.pad_state = s.pad_now[jid];
+    interaction_submit(w, e);
+    s.pad_sent[jid] = s.pad_now[jid];
+  }
+}
+
+// Who has which controls (the HUD's name plates, the pause menu): two players, or the player with pads.
+std::string who_controls(const World& w, int boxer) {
+  const bool versus = w.options.mode == "versus";
+  return controls_tag(boxer, pads_connected(*w.interaction), versus, w.options.player);
+}
+
+// The pause menu's lines under the controls: each player's controls, the pads by name.
+std::vector<std::string> pause_who(const WindowRun& s) {
+  const World& w = *s.world;
+  std::vector<std::string> who;
+  if (w.match->active && (w.options.mode == "versus" || w.options.player >= 0))
+    for (int k = 0; k < 2; ++k)
+      if (const std::string t = who_controls(w, k); !t.empty())
+        who.push_back(std::string(k == 0 ? "RED" : "BLUE") + (w.options.mode == "versus" ? (k == 0 ? " (P1): " : " (P2): ") : ": ") + t);
+  std::string pads;
+  for (int jid = 0; jid < kMaxPads; ++jid)
+    if (s.pad_now[jid].connected) pads += (pads.empty() ? "" : ", ") + std::to_string(jid + 1) + " " + s.pad_name[jid];
+  who.push_back(pads.empty() ? "NO GAMEPAD (plug one in: it is picked up at once)" : "GAMEPADS: " + pads);
+  return who;
 }
 
 // The mouse: the left button grabs what is under the cursor, drags it and lets go (the panel keeps its own clicks);
@@ -556,8 +636,12 @@ void watch_for_replay(WindowRun& s) {
 
 // The key hints along the bottom while playing: what a newcomer needs to find the menu, the panel and the fight.
 std::string key_hints(const World& w) {
-  std::string line = "Esc menu   Tab physics panel   H debug";
-  if (w.match->active && w.options.player >= 0) line += "   J jab  K cross  U/I hooks  N/M uppercuts  B block";
+  std::string line = "Esc menu + controls   Tab physics panel   H debug";
+  const bool versus = w.options.mode == "versus";
+  if (w.match->active && versus)
+    line += "   P1: WASD QE  R F V B Z X  L-Shift+WASD   P2: arrows  J K U I N M  R-Shift+arrows";
+  else if (w.match->active && w.options.player >= 0)
+    line += "   WASD step  QE pivot  J K jab cross  U I hooks  N M uppercuts  Shift+WASD block slip duck";
   else if (!w.match->active) line += "   left-drag grab   T ball   Y crate   C camera";
   else line += "   C camera";
   return line;
@@ -573,7 +657,12 @@ void draw_panels(WindowRun& s) {
   if (w.match->active && s.front.screen != Screen::Title) {
     MatchHud hud = match_hud(w);
     if (s.replay.active) hud.banner = hud.cards = "REPLAY";
-    if (w.options.mode == "versus") hud.side[0].tag = "PLAYER 1", hud.side[1].tag = "PLAYER 2: NOT YET (AI)";
+    // Who has which controls: two players' halves and pads, or the player's pads.
+    for (int k = 0; k < 2; ++k) {
+      const std::string t = who_controls(w, k);
+      if (w.options.mode == "versus") hud.side[k].tag = (k == 0 ? "P1: " : "P2: ") + t;
+      else if (hud.side[k].player && pads_connected(*w.interaction) > 0) hud.side[k].tag = "YOU: " + t;
+    }
     if (s.front.screen != Screen::Result) draw_broadcast_hud(hud, fonts);
   }
   if (playing && s.overlay) {
@@ -595,7 +684,7 @@ void draw_panels(WindowRun& s) {
   if (playing && s.ui_visible && !w.match->active) draw_caption(scenario_caption(w), fonts.medium);  // says what it is
   FrontAction chosen = FrontAction::None;
   if (s.front.screen == Screen::Title) chosen = draw_title(s.front, fonts);
-  if (s.front.screen == Screen::Paused) chosen = draw_pause_menu(s.front, fonts);
+  if (s.front.screen == Screen::Paused) chosen = draw_pause_menu(s.front, fonts, pause_who(s));
   if (s.front.screen == Screen::Result && w.match->active) chosen = draw_result(bout_summary(w), fonts);
   eng::ui::ui_end(s.r.ui());
   carry_out(s, chosen);
@@ -741,6 +830,7 @@ int run_windowed(const Options& o) {
     s.win.poll_events();
     const FrameInput in = begin_ui_frame(s);
     handle_keys(s, in);
+    poll_pads(s);
     handle_mouse(s, in);
     step_simulation(s);
     if (!feed_audio(**audio, s, in)) return 1;

@@ -66,7 +66,7 @@ inline constexpr double kResultDelay = 3.0;
 void front_end_watch_bout(FrontEnd& fe, bool bout_over, double time_s);
 
 // The run's options for a mode: watch, play and versus the match (play: red is the keyboard's; versus: both are
-// players' but only player 1 has keys yet, so blue stays the AI), sandbox the stand scenario (two boxers in guard to
+// players', match_setup reads the mode: the keyboard's halves and the pads, fight_keys.h), sandbox the stand scenario (two boxers in guard to
 // drag, push and throw at).
 Options apply_mode(Options o, Mode m);
 // The options the title's settings start: the mode, the seed, the rounds and the AI level (both AIs' level).

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <string>
 
+#include "game/interaction/fight_keys.h"
 #include "imgui.h"
 
 namespace boxing {
@@ -136,24 +137,44 @@ FrontAction draw_title(FrontEnd& fe, const HudFonts& f) {
   return chosen;
 }
 
-FrontAction draw_pause_menu(FrontEnd& fe, const HudFonts& f) {
+FrontAction draw_pause_menu(FrontEnd& fe, const HudFonts& f, const std::vector<std::string>& who) {
   const ImGuiIO& io = ImGui::GetIO();
   const float W = io.DisplaySize.x, H = io.DisplaySize.y, cx = 0.5f * W;
   ImDrawList* dl = begin_screen("##pause", 160);
-  const float large = size_of(f.large);
-  float y = 0.22f * H;
+  const float large = size_of(f.large), medium = size_of(f.medium);
+  float y = 0.15f * H;  // below the HUD's name plates and clock
   hud_text(dl, f.huge, cx, y, 0.5f, kWhite, "PAUSED");
-  y += size_of(f.huge) + 30.0f;
-  ground(dl, cx, y - 14.0f, 480.0f, 3.0f * (large + 20.0f) + 8.0f);
+  y += size_of(f.huge) + 20.0f;
+  ground(dl, cx, y - 10.0f, 480.0f, 3.0f * (large + 14.0f) + 6.0f);
   const char* rows[] = {"RESUME", "RESTART", "QUIT TO TITLE"};
   FrontAction chosen = FrontAction::None;
   for (int r = 0; r < static_cast<int>(PauseItem::Count); ++r) {
-    if (menu_row(rows[r], y, 420.0f, large + 10.0f, r, fe.pause_cursor))
+    if (menu_row(rows[r], y, 420.0f, large + 8.0f, r, fe.pause_cursor))
       chosen = pause_choose(fe, static_cast<PauseItem>(r));
-    row_label(dl, f, y, 420.0f, large + 10.0f, fe.pause_cursor == r, rows[r]);
-    y += large + 20.0f;
+    row_label(dl, f, y, 420.0f, large + 8.0f, fe.pause_cursor == r, rows[r]);
+    y += large + 14.0f;
   }
-  hud_text(dl, f.medium, cx, H - 30.0f, 0.5f, kWhite, "Up / Down choose    Enter    Esc resume");
+  // The controls (fight_keys.h, gamepad.h): one row per action, a column per half of the keyboard and the pad; under
+  // it who has which controls now (two players: which half, which pad).
+  const std::vector<ControlsRow>& table = controls_table();
+  const float line = medium + 6.0f, width = std::min(W - 40.0f, 1180.0f), left = cx - 0.5f * width;
+  y += 14.0f;
+  ground(dl, cx, y - 8.0f, width, line * static_cast<float>(table.size() + who.size()) + 22.0f);
+  const float col[4] = {left + 16.0f, left + 0.30f * width, left + 0.52f * width, left + 0.75f * width};
+  for (size_t r = 0; r < table.size(); ++r) {
+    const ImU32 c = r == 0 ? kGold : kWhite;
+    hud_text(dl, f.medium, col[0], y, 0.0f, r == 0 ? kGold : kDim, table[r].action);
+    hud_text(dl, f.medium, col[1], y, 0.0f, c, table[r].left);
+    hud_text(dl, f.medium, col[2], y, 0.0f, c, table[r].right);
+    hud_text(dl, f.medium, col[3], y, 0.0f, c, table[r].pad);
+    y += line;
+  }
+  y += 6.0f;
+  for (const std::string& w : who) {
+    hud_text(dl, f.medium, col[0], y, 0.0f, kGold, w.c_str());
+    y += line;
+  }
+  hud_text(dl, f.medium, cx, H - 30.0f, 0.5f, kWhite, "Up / Down choose    Enter    Esc resume    (pad: d-pad, A, Start)");
   ImGui::End();
   return chosen;
 }

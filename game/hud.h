@@ -33,7 +33,7 @@ struct MatchHud {
     float consciousness = 1.0f;
     int landed = 0, thrown = 0, knockdowns = 0;
     bool player = false;
-    std::string tag;  // under the name: "YOU", "PLAYER 2: NOT YET (AI)" ("" = none)
+    std::string tag;  // under the name: "YOU", "P2: RIGHT KEYS" ("" = none)
     const char* state = "";
   } side[2];
   int down = -1;               // the boxer down now (-1: none)

@@ -57,6 +57,7 @@ Window::~Window() {
 
 void Window::poll_events() {
   pressed_.clear();
+  pressed_held_.clear();
   scroll_ = glm::dvec2(0.0);
   for (bool& c : clicked_) c = false;
   chars_.clear();
@@ -156,7 +157,27 @@ std::vector<const char*> Window::required_instance_extensions() {
 
 void Window::on_key(GLFWwindow* gw, int key, int, int action, int) {
   auto* self = static_cast<Window*>(glfwGetWindowUserPointer(gw));
-  if (self && action == GLFW_PRESS) self->pressed_.push_back(key);
+  if (!self) return;
+  unsigned bit = 0;
+  if (key == GLFW_KEY_LEFT_SHIFT) bit = kHeldLeftShift;
+  if (key == GLFW_KEY_RIGHT_SHIFT) bit = kHeldRightShift;
+  if (key == GLFW_KEY_LEFT_CONTROL) bit = kHeldLeftCtrl;
+  if (key == GLFW_KEY_RIGHT_CONTROL) bit = kHeldRightCtrl;
+  if (action == GLFW_PRESS) self->held_ |= bit;
+  if (action == GLFW_RELEASE) self->held_ &= ~bit;
+  if (action == GLFW_PRESS) self->pressed_.push_back(key), self->pressed_held_.push_back(self->held_);
+}
+
+GamepadReading read_gamepad(int jid) {
+  GamepadReading r;
+  GLFWgamepadstate s;
+  if (jid < 0 || jid >= kMaxGamepads || glfwJoystickIsGamepad(jid) != GLFW_TRUE || glfwGetGamepadState(jid, &s) != GLFW_TRUE)
+    return r;
+  r.connected = true;
+  for (int k = 0; k < 15; ++k) r.buttons[k] = s.buttons[k] == GLFW_PRESS;
+  for (int k = 0; k < 6; ++k) r.axes[k] = s.axes[k];
+  if (const char* n = glfwGetGamepadName(jid)) r.name = n;
+  return r;
 }
 
 void Window::on_scroll(GLFWwindow* gw, double dx, double dy) {

@@ -16,6 +16,20 @@ namespace eng::platform {
 // blocks) on headless machines, then tries to initialise GLFW.
 bool display_available();
 
+// A gamepad as GLFW 3.3 sees it (GLFWgamepadstate: the Xbox layout GLFW maps every pad in its built-in SDL
+// GameController database to; buttons and axes in GLFW_GAMEPAD_* order; sticks -1..1 with up negative, triggers -1
+// released .. 1 pulled). Not connected: a joystick GLFW has no mapping for counts as no pad.
+struct GamepadReading {
+  bool connected = false;
+  bool buttons[15] = {};
+  float axes[6] = {0.0f, 0.0f, 0.0f, 0.0f, -1.0f, -1.0f};
+  const char* name = "";  // glfwGetGamepadName's
+};
+inline constexpr int kMaxGamepads = 16;  // GLFW_JOYSTICK_1 .. GLFW_JOYSTICK_LAST
+// Reads pad jid now (GLFW must be initialised: a Window exists). GLFW notices pads plugged in or out as it polls
+// events, so reading every pad each frame is the hot-plug.
+GamepadReading read_gamepad(int jid);
+
 struct WindowConfig {
   std::string title = "boxing";
   int width = 1280;
@@ -49,6 +63,10 @@ class Window {
   bool key_down(int glfw_key) const;
   // Every key press of the last poll_events(), in order, repeats included (a menu takes two quick Downs as two).
   const std::vector<int>& keys_pressed() const { return pressed_; }
+  // The same presses with the modifier keys held as each went down (kHeld* bits): GLFW's mods say Shift, not which
+  // Shift, and asking glfwGetKey after the poll is too late when a quick Shift+A was pressed and let go in one poll.
+  enum : unsigned { kHeldLeftShift = 1u, kHeldRightShift = 2u, kHeldLeftCtrl = 4u, kHeldRightCtrl = 8u };
+  const std::vector<unsigned>& keys_pressed_held() const { return pressed_held_; }
   glm::dvec2 mouse_position() const;
   bool mouse_button_down(int glfw_button) const;
   glm::dvec2 scroll_delta() const;  // accumulated during the last poll_events()
@@ -73,6 +91,8 @@ class Window {
 
   GLFWwindow* window_ = nullptr;
   std::vector<int> pressed_;
+  std::vector<unsigned> pressed_held_;  // per press: the modifiers held (kHeld* bits)
+  unsigned held_ = 0;                   // the modifiers held now, from the key events in order
   glm::dvec2 scroll_{0.0};
   bool clicked_[3] = {false, false, false};  // pressed during the last poll (latched for the UI)
   std::vector<uint32_t> chars_;              // typed during the last poll

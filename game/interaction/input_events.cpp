@@ -12,7 +12,8 @@ namespace {
 constexpr std::pair<InputKind, const char*> kKinds[] = {
     {InputKind::Drag, "drag"},   {InputKind::Grab, "grab"},   {InputKind::Move, "move"},
     {InputKind::Release, "release"}, {InputKind::Throw, "throw"}, {InputKind::Clear, "clear"},
-    {InputKind::Push, "push"},   {InputKind::Key, "key"},     {InputKind::Set, "set"}};
+    {InputKind::Push, "push"},   {InputKind::Key, "key"},     {InputKind::Set, "set"},
+    {InputKind::Pad, "pad"}};
 
 // Field readers: each returns an error message naming KIND.FIELD, or "" when the field is fine (or absent and
 // optional).
@@ -105,6 +106,54 @@ struct Fields {
 constexpr double kMaxCoord = 1000.0;  // m, m/s, or N: anything larger is a typo, not a game
 constexpr int kMaxBoxer = 15;
 
+// A pad event's body: its index, and the state it is in from now on (absent buttons up, absent axes at rest).
+void parse_pad(Fields& f, InputEvent& e) {
+  f.only({"pad", "connected", "buttons", "axes", "boxer"});
+  f.integer("pad", e.pad, true, 0, kMaxPads - 1);
+  e.pad_state = PadState{};
+  e.pad_state.connected = true;
+  f.flag("connected", e.pad_state.connected);
+  f.integer("boxer", e.pad_boxer, false, 0, 1);
+  if (!f.err.empty()) return;
+  if (!e.pad_state.connected && (f.has("buttons") || f.has("axes")))
+    return f.fail("connected", "is false: an unplugged pad has no buttons or axes (drop them, or connect it)");
+  auto names = [](const char* const* list, int n) {
+    std::string s;
+    for (int i = 0; i < n; ++i) {
+      if (i) s += ' ';
+      s += list[i];
+    }
+    return s;
+  };
+  if (f.has("buttons")) {
+    const auto& b = f.obj["buttons"];
+    if (!b.is_object()) return f.fail("buttons", "must be an object of button: true | false");
+    for (auto it = b.begin(); it != b.end(); ++it) {
+      int k = 0;
+      while (k < kPadButtons && it.key() != kPadButtonNames[k]) ++k;
+      if (k == kPadButtons)
+        return f.fail("buttons", "has '" + it.key() + "', not a button (one of: " +
+                                     names(kPadButtonNames, kPadButtons) + ")");
+      if (!it->is_boolean()) return void(f.err = "pad.buttons." + it.key() + " must be true or false");
+      e.pad_state.buttons[k] = it->get<bool>();
+    }
+  }
+  if (f.has("axes")) {
+    const auto& a = f.obj["axes"];
+    if (!a.is_object()) return f.fail("axes", "must be an object of axis: number in [-1, 1]");
+    for (auto it = a.begin(); it != a.end(); ++it) {
+      int k = 0;
+      while (k < kPadAxes && it.key() != kPadAxisNames[k]) ++k;
+      if (k == kPadAxes)
+        return f.fail("axes", "has '" + it.key() + "', not an axis (one of: " + names(kPadAxisNames, kPadAxes) + ")");
+      if (!it->is_number() || !std::isfinite(it->get<double>()) || std::abs(it->get<double>()) > 1.0)
+        return void(f.err = "pad.axes." + it.key() + " must be a number in [-1, 1] (sticks: up and left negative; "
+                                                      "triggers: -1 released, 1 pulled)");
+      e.pad_state.axes[k] = static_cast<float>(it->get<double>());
+    }
+  }
+}
+
 }  // namespace
 
 const char* input_kind_name(InputKind k) {
@@ -128,12 +177,12 @@ eng::Result<InputEvent> parse_input_event(const nlohmann::json& j) {
       if (it.key() == kk.second) k = &kk;
     if (!k)
       return eng::make_error("'" + it.key() +
-                             "' is not an event (one of: drag grab move release throw clear push key set)");
+                             "' is not an event (one of: drag grab move release throw clear push key set pad)");
     if (found) return eng::make_error(std::string("has two events ('") + found->second + "' and '" + k->second +
                                       "'): one per entry");
     found = k;
   }
-  if (!found) return eng::make_error("has no event (one of: drag grab move release throw clear push key set)");
+  if (!found) return eng::make_error("has no event (one of: drag grab move release throw clear push key set pad)");
   e.kind = found->first;
   const nlohmann::json& body = j[found->second];
   if (!body.is_object()) return eng::make_error(std::string(found->second) + " must be an object ({} if empty)");
@@ -203,6 +252,7 @@ eng::Result<InputEvent> parse_input_event(const nlohmann::json& j) {
       }
       f.integer("boxer", e.boxer, false, 0, kMaxBoxer);
       break;
+    case InputKind::Pad: parse_pad(f, e); break;
     case InputKind::Set:
       f.only({"boxer", "servo", "balance", "omega_n", "root_spring", "root_limit", "control", "consciousness"});
       f.integer("boxer", e.boxer, true, 0, kMaxBoxer);
@@ -285,6 +335,15 @@ nlohmann::json input_event_json(const InputEvent& e) {
       b = {{"boxer", e.boxer}, {"bone", e.bone.empty() ? "chest" : e.bone}, {"force", v3(e.vec)}, {"duration", e.duration}};
       break;
     case InputKind::Key: b = {{"action", e.action}, {"boxer", e.boxer}}; break;
+    case InputKind::Pad:
+      b["pad"] = e.pad;
+      if (!e.pad_state.connected) b["connected"] = false;
+      if (e.pad_boxer >= 0) b["boxer"] = e.pad_boxer;
+      for (int k = 0; k < kPadButtons && e.pad_state.connected; ++k)
+        if (e.pad_state.buttons[k]) b["buttons"][kPadButtonNames[k]] = true;
+      for (int k = 0; k < kPadAxes && e.pad_state.connected; ++k)
+        if (e.pad_state.axes[k] != pad_axis_rest(k)) b["axes"][kPadAxisNames[k]] = double(e.pad_state.axes[k]);
+      break;
     case InputKind::Set:
       b["boxer"] = e.boxer;
       if (e.servo) b["servo"] = *e.servo;

@@ -17,7 +17,11 @@
 //   push    {"boxer": 0, "bone": "chest", "force": [x, y, z], "duration": 0.1}   (N, world, at the bone's com)
 //   key     {"action": "jab", "boxer": 0}   a fight key (jab cross lead_hook rear_hook lead_uppercut
 //           rear_uppercut block slip_left slip_right duck step_forward step_back step_left step_right pivot_left
-//           pivot_right); the boxer becomes the player's
+//           pivot_right); the boxer becomes the player's (the second player's keys: "boxer": 1)
+//   pad     {"pad": 0, "buttons": {"x": true, ...}, "axes": {"left_x": 0.8, ...}, "connected": true, "boxer": 1}
+//           a gamepad's whole state from then on (gamepad.h: the names, the mapping); absent buttons are up, absent
+//           axes at rest (sticks 0, triggers -1), "connected": false unplugs it; "boxer" pins it to a boxer (default:
+//           the assignment rule, gamepad.h pad_boxer)
 //   set     {"boxer": 0, "servo": "world" | "person" | "parent", "balance": "qp" | "pd", "omega_n": 15,
 //            "root_spring": "on" | "off", "root_limit": 400, "control": "ai" | "player", "consciousness": 1.0}
 //           (any subset): the panel's settings
@@ -28,6 +32,7 @@
 #include <vector>
 
 #include "engine/core/result.h"
+#include "game/interaction/gamepad.h"
 
 namespace boxing {
 
@@ -38,7 +43,7 @@ inline constexpr const char* kKeyActions[] = {"jab",   "cross",     "lead_hook",
                                               "pivot_left",    "pivot_right"};
 inline constexpr int kKeyActionCount = sizeof(kKeyActions) / sizeof(kKeyActions[0]);
 
-enum class InputKind : uint8_t { Drag, Grab, Move, Release, Throw, Clear, Push, Key, Set };
+enum class InputKind : uint8_t { Drag, Grab, Move, Release, Throw, Clear, Push, Key, Set, Pad };
 enum class ObjectKind : uint8_t { Ball, Crate };
 
 struct InputEvent {
@@ -59,6 +64,10 @@ struct InputEvent {
   Eigen::Vector3d from = Eigen::Vector3d::Zero(), velocity = Eigen::Vector3d::Zero();
   // key
   std::string action;
+  // pad: which (0 .. kMaxPads - 1), its state, the boxer it is pinned to (-1: the assignment rule)
+  int pad = -1;
+  PadState pad_state;
+  int pad_boxer = -1;
   // set (absent fields are left as they are)
   std::optional<std::string> servo, balance, root_spring, control;
   std::optional<double> omega_n, root_limit, consciousness;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <string>
 
 #include "engine/physics/raycast.h"
@@ -213,6 +214,13 @@ void apply_event(World& w, const InputEvent& e) {
       for (int i = 0; i < kKeyActionCount; ++i)
         if (e.action == kKeyActions[i]) match_command(w, e.boxer, static_cast<FightCommand>(i + 1));
       break;
+    case InputKind::Pad: {
+      PadSlot& slot = in.pads[e.pad];
+      slot.state = e.pad_state;
+      slot.boxer = e.pad_boxer;
+      slot.seen = true;
+      break;
+    }
     case InputKind::Set: apply_settings(w, e); break;
   }
   ++in.events_applied;
@@ -283,6 +291,38 @@ void interaction_setup(World& w, std::vector<InputEvent> script) {
   in.next_script = 0;
 }
 
+int pads_connected(const Interaction& in) {
+  int n = 0;
+  for (const PadSlot& p : in.pads) n += p.state.connected ? 1 : 0;
+  return n;
+}
+
+namespace {
+
+// Every pad read each step (gamepad.h): a held stick's step repeats on the simulation's clock, so a pad's fight
+// replays from its recorded events alone. Each action goes to the pad's boxer by the assignment rule.
+void read_pads(World& w) {
+  Interaction& in = *w.interaction;
+  const bool versus = w.options.mode == "versus";
+  const int connected = pads_connected(in);
+  int rank = 0;
+  for (PadSlot& slot : in.pads) {
+    if (!slot.state.connected && !slot.reader.last.connected) continue;
+    const PadActions acts = pad_update(slot.reader, slot.state, w.data.time);
+    const int boxer = slot.boxer >= 0 ? slot.boxer : pad_boxer(rank, connected, versus, w.options.player);
+    if (slot.state.connected) ++rank;
+    for (int a = 0; a < acts.count && boxer >= 0 && w.match->active; ++a)
+      for (int i = 0; i < kKeyActionCount; ++i)
+        if (std::strcmp(acts.action[a], kKeyActions[i]) == 0) {
+          match_command(w, boxer, static_cast<FightCommand>(i + 1));
+          ++slot.actions;
+          slot.last_boxer = boxer;
+        }
+  }
+}
+
+}  // namespace
+
 void interaction_submit(World& w, InputEvent e) { w.interaction->queue.push_back(std::move(e)); }
 
 void interaction_begin_step(World& w) {
@@ -294,6 +334,7 @@ void interaction_begin_step(World& w) {
     apply_event(w, in.script[in.next_script++]);
   for (const InputEvent& e : in.queue) apply_event(w, e);
   in.queue.clear();
+  read_pads(w);
   // Parked objects stay put; live ones that left the world (fell off the edge) are parked.
   for (int k = 0; k < int(in.objects.size()); ++k) {
     const ThrownObject& o = in.objects[k];
@@ -415,7 +456,15 @@ nlohmann::json interaction_report(const World& w) {
                     {"bone", w.boxer_desc.skeleton.name[h.bone]},
                     {"speed_mps", h.speed},
                     {"impulse_ns", h.impulse}});
+  nlohmann::json pads = nlohmann::json::array();
+  for (int k = 0; k < kMaxPads; ++k)
+    if (in.pads[k].seen)
+      pads.push_back({{"pad", k},
+                      {"connected", in.pads[k].state.connected},
+                      {"actions", in.pads[k].actions},
+                      {"boxer", in.pads[k].last_boxer}});
   return {{"events_applied", in.events_applied},
+          {"pads", pads},
           {"drags", drags},
           {"objects_thrown", in.objects_thrown},
           {"object_hits", hits}};

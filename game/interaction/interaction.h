@@ -69,6 +69,17 @@ struct ActivePush {
   double until = 0.0;
 };
 
+// A gamepad as the world sees it: its last state (pad events), what pad_update carries between reads, the boxer it is
+// pinned to (-1: pad_boxer's rule) and the actions it gave (the report's pads).
+struct PadSlot {
+  PadState state;
+  PadReader reader;
+  int boxer = -1;
+  int actions = 0;
+  int last_boxer = -1;  // the boxer its last action went to
+  bool seen = false;    // a pad event named it
+};
+
 struct Interaction {
   std::vector<InputEvent> script;  // --input, in time order
   size_t next_script = 0;
@@ -78,6 +89,7 @@ struct Interaction {
   std::vector<ThrownObject> objects;
   std::array<HeldDrag, 4> drags;  // [0] the mouse
   std::vector<ActivePush> pushes;
+  std::array<PadSlot, kMaxPads> pads;
   std::vector<BodyOwner> owners;  // per physics body: which boxer and bone (body_parts.h)
   // report
   int events_applied = 0;
@@ -119,6 +131,8 @@ void interaction_begin_step(World& w);
 void interaction_apply_forces(World& w);
 // After the step: drag peaks and displacement, object hits.
 void interaction_after_step(World& w);
+// The gamepads connected now (the assignment rule's count).
+int pads_connected(const Interaction& in);
 // The window's input: applied at the start of the next physics step.
 void interaction_submit(World& w, InputEvent e);
 

@@ -99,7 +99,7 @@ void match_setup(World& w) {
     f.ai.style = draw_fighter_style(f.ai.rng, f.ai.tuning);
     // Both settle into guard first.
     f.ai.next_attack = f.ai.tuning.first_attack + f.ai.rng.uniform(0.0, f.ai.tuning.first_attack_spread);
-    f.player = w.options.player == k;
+    f.player = w.options.player == k || w.options.mode == "versus";  // versus: both are players' (front_end.h)
     Boxer& b = w.boxers[k];
     // The AI (or the player) decides what is thrown: the walk takes no random transition (a punch, a slip) of its own
     // and guard loops until asked for something else; continuations, hits and knockdowns go on as in any walk.

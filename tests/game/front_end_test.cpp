@@ -90,7 +90,7 @@ TEST(FrontEnd, ModesSetTheScenarioAndThePlayersAndTheTitlesSettingsTheRest) {
   EXPECT_EQ(apply_mode(base, Mode::Watch).scenario_id, Scenario::Match);
   EXPECT_EQ(apply_mode(base, Mode::Watch).player, -1);
   EXPECT_EQ(apply_mode(base, Mode::Play).player, 0);
-  EXPECT_EQ(apply_mode(base, Mode::Versus).player, 0);  // player 2 has no keys yet: blue stays the AI
+  EXPECT_EQ(apply_mode(base, Mode::Versus).player, 0);  // versus: both are players' (match_setup reads the mode)
   EXPECT_EQ(apply_mode(base, Mode::Sandbox).scenario_id, Scenario::Stand);
   EXPECT_EQ(apply_mode(base, Mode::Sandbox).scenario, "stand");
   FrontEndSettings s;

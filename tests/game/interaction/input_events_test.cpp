@@ -27,7 +27,10 @@ nlohmann::json every_kind() {
     {"t": 3.0, "push": {"boxer": 0, "force": [300, 0, 0], "duration": 0.1}},
     {"t": 3.5, "key": {"action": "jab", "boxer": 1}},
     {"t": 4.0, "set": {"boxer": 0, "servo": "person", "balance": "pd", "omega_n": 12.5, "root_spring": "on",
-                       "root_limit": 300, "control": "player", "consciousness": 0.5}}
+                       "root_limit": 300, "control": "player", "consciousness": 0.5}},
+    {"t": 4.5, "pad": {"pad": 1, "buttons": {"x": true, "dpad_up": true}, "axes": {"left_x": -0.8125, "right_trigger": 1}}},
+    {"t": 5.0, "pad": {"pad": 1, "connected": false}},
+    {"t": 5.5, "pad": {"pad": 0, "boxer": 1}}
   ]})");
 }
 }  // namespace
@@ -35,7 +38,7 @@ nlohmann::json every_kind() {
 TEST(InputEvents, EveryKindParsesWithItsFields) {
   auto events = boxing::parse_input_events(every_kind());
   ASSERT_TRUE(events.ok()) << events.error();
-  ASSERT_EQ(events->size(), 12u);
+  ASSERT_EQ(events->size(), 15u);
   const auto& e = *events;
   EXPECT_EQ(e[0].kind, InputKind::Drag);
   EXPECT_EQ(e[0].bone, "head");
@@ -55,6 +58,20 @@ TEST(InputEvents, EveryKindParsesWithItsFields) {
   EXPECT_EQ(*e[11].servo, "person");
   EXPECT_DOUBLE_EQ(*e[11].omega_n, 12.5);
   EXPECT_DOUBLE_EQ(*e[11].consciousness, 0.5);
+  // A pad's state: the buttons named are down, the others up; the axes named set, the others at rest.
+  EXPECT_EQ(e[12].kind, InputKind::Pad);
+  EXPECT_EQ(e[12].pad, 1);
+  EXPECT_TRUE(e[12].pad_state.connected);
+  EXPECT_TRUE(e[12].pad_state.buttons[boxing::kPadX]);
+  EXPECT_TRUE(e[12].pad_state.buttons[boxing::kPadDpadUp]);
+  EXPECT_FALSE(e[12].pad_state.buttons[boxing::kPadA]);
+  EXPECT_EQ(e[12].pad_state.axes[boxing::kPadLeftX], -0.8125f);
+  EXPECT_EQ(e[12].pad_state.axes[boxing::kPadRightTrigger], 1.0f);
+  EXPECT_EQ(e[12].pad_state.axes[boxing::kPadLeftTrigger], -1.0f);  // at rest: released
+  EXPECT_EQ(e[12].pad_boxer, -1);                                   // the assignment rule's
+  EXPECT_FALSE(e[13].pad_state.connected);
+  EXPECT_EQ(e[14].pad_boxer, 1);
+  EXPECT_EQ(e[14].pad_state, boxing::PadState{true});  // connected, everything at rest
 }
 
 // What --record writes is what --input reads: the written form parses back to the same form, digit for digit.
@@ -98,6 +115,18 @@ TEST(InputEvents, ABadEventIsOneErrorNamingTheEventAndTheField) {
       {R"([{"drag": {}}])", "event 0: t must be a time in seconds >= 0"},
       {R"([{"t": 3, "clear": {}}, {"t": 2, "clear": {}}])", "events must be in time order"},
       {R"({"evnts": []})", "has no \"events\" array"},
+      {R"([{"t": 1, "pad": {"buttons": {"x": true}}}])", "pad.pad is missing"},
+      {R"([{"t": 1, "pad": {"pad": 16}}])", "pad.pad must be an integer in [0, 15]"},
+      {R"([{"t": 1, "pad": {"pad": 0, "buttons": {"triangle": true}}}])",
+       "pad.buttons has 'triangle', not a button (one of: a b x y"},
+      {R"([{"t": 1, "pad": {"pad": 0, "buttons": {"a": 1}}}])", "pad.buttons.a must be true or false"},
+      {R"([{"t": 1, "pad": {"pad": 0, "axes": {"left_x": 1.5}}}])", "pad.axes.left_x must be a number in [-1, 1]"},
+      {R"([{"t": 1, "pad": {"pad": 0, "axes": {"left_z": 0.5}}}])", "pad.axes has 'left_z', not an axis"},
+      {R"([{"t": 1, "pad": {"pad": 0, "axes": [0, 1]}}])", "pad.axes must be an object"},
+      {R"([{"t": 1, "pad": {"pad": 0, "connected": false, "buttons": {"a": true}}}])",
+       "pad.connected is false: an unplugged pad has no buttons"},
+      {R"([{"t": 1, "pad": {"pad": 0, "boxer": 2}}])", "pad.boxer must be an integer in [0, 1]"},
+      {R"([{"t": 1, "pad": {"pad": 0, "stick": 1}}])", "pad.stick is not a field of pad"},
   };
   for (const Case& c : cases) {
     auto r = boxing::parse_input_events(nlohmann::json::parse(c.json));
