@@ -5,11 +5,10 @@
 //
 // WHY a schedule. The balance QP can take contacts on any link (balance_qp.h), but a lying body has a dozen links on
 // the ground; planned with all of them, nothing ever leaves it, and planned with the soles only (the standing plan)
-// its torques make the limbs flail (qp_balance.cpp, down_or_getting_up). A human get-up is a sequence of support sets
-// (prone: push up -> hands and knees -> one knee -> stand; supine: sit up -> turn onto a hand and a knee -> one knee
-// -> stand; the sequences of the get-up studies behind issue 63: Tao et al. 2022, Frezzato et al. 2022, HoST 2025,
-// each learning or planning exactly these contact changes). Each phase names its support set; its links are the plan's
-// contacts, every other link is lifted by the clip's bone tasks.
+// its torques make the limbs flail (qp_balance.cpp, down_or_getting_up). A human get-up is a sequence of support sets,
+// the ones issue 63 names (prone: push up -> hands and knees -> one knee -> stand; supine: sit up -> a hand and a knee
+// -> one knee -> stand). Each phase names its support set; its links are the plan's contacts, every other link is
+// lifted by the clip's bone tasks.
 //
 // WHY gates. The get-up clips (content/clips/src/getup_front.clip, getup_back.clip) are authored fast (2 s, carried
 // by the assisted get-up's root spring). Here the clip's clock is the plan's: it runs at GetUpPlanTuning::clip_rate
