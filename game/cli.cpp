@@ -308,6 +308,9 @@ const std::vector<Flag> kFlags = {
     {{"--stepping"}, "on|off|auto", word(&Options::stepping, {"on", "off", "auto"}),
      "balance QP: steps when a push carries the capture point out of the feet (off: in place);\n"
      "auto (default): on for push (the lab), match and graph-walk, off elsewhere"},
+    {{"--getup"}, "assisted|unassisted", word(&Options::getup, {"assisted", "unassisted"}),
+     "how a floored boxer gets up: assisted (default), carried by a force under the pelvis;\n"
+     "unassisted, on its own strength (balance QP on hands, knees and feet; no force)"},
     {{"--step-placement"}, "capture|ipc", word(&Options::step_placement, {"capture", "ipc"}),
      "where a balance step lands: past the capture point (default) or where Kwon & Hodgins'\n"
      "cart-pole LQR comes to rest"},

@@ -65,6 +65,9 @@ struct Options {
   std::string balance = "qp";
   std::string stepping = "auto";      // --stepping on|off|auto: the balance's own steps (off = in place, Kudoh's
                                       // lab); auto = on in the push lab, the match and the walk, off elsewhere
+  // --getup assisted|unassisted: the carried get-up (the root spring's force lifts the pelvis: stand_up.h) or the one
+  // the body does (the balance QP on the get-up plan's supports, no force: unassisted_getup.h)
+  std::string getup = "assisted";
   std::string step_placement = "capture";  // --step-placement capture|ipc: capture point or Kwon's cart-pole LQR
   std::string footwork = "carry";     // --footwork shuffle|carry: the clips' steps pressed along the crate, or carried
   bool flat = false;                  // --flat: one level platform (the papers' floor) instead of the uneven crates

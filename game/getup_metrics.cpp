@@ -20,6 +20,8 @@ const std::string kDown = "down", kUp = "up", kNoClip = "stand-up";
 // The phase a fallen boxer is in: down, or the clip its stand-up plays (a reference: no string built per tick).
 const std::string& phase_of(const World& w, const Boxer& b) {
   if (b.ctl.state.state != BoxerState::GettingUp) return kDown;
+  if (const QpBalance* q = std::get_if<QpBalance>(&b.ctl.balance); q && q->getup.active)
+    return getup_phase_name(q->getup);  // the unassisted get-up's phase (getup_plan.h)
   const eng::anim::GraphWalker* walker = b.source.walker();
   return walker ? w.graph.clips[walker->current_clip_index()].name : kNoClip;
 }
@@ -125,7 +127,8 @@ nlohmann::json getups_report(const World& w) {
                    {"joint_torque_peak_nm", peak},
                    {"joint_torque_limit_nm", limit},
                    {"joint_torque_peak_fraction", fraction},
-                   {"phases", phases}});
+                   {"phases", phases},
+                   {"mode", w.options.getup}});  // --getup assisted | unassisted
   }
   return out;
 }

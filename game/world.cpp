@@ -207,6 +207,7 @@ void add_boxer(World& w, int index, const Eigen::Vector3f& color, bool limp, con
       w.options.scenario_id == Scenario::Push || scenario_hooks(w.options.scenario_id).walks_graph;
   b.settings.stepping = w.options.stepping == "on" || (w.options.stepping == "auto" && steps_by_default);
   b.settings.tuning.step.carry = w.options.footwork == "carry";
+  b.settings.tuning.stand_up.unassisted = w.options.getup == "unassisted";
   if (w.options.priorities == "kudoh") {  // the fight's (MatchTuning, match_setup), in any scenario
     b.settings.tuning.qp.trunk_weight = MatchTuning{}.trunk_weight;
     b.settings.tuning.qp.com_weight = MatchTuning{}.com_weight;

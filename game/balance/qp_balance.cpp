@@ -18,6 +18,7 @@
 #include "game/balance/balance_controller.h"
 #include "game/balance/com_support.h"
 #include "game/balance/stand_up.h"
+#include "game/balance/unassisted_getup.h"
 #include "game/boxer.h"
 #include "game/footwork.h"
 
@@ -161,6 +162,10 @@ bool down_or_getting_up(QpBalance& q, BalanceTick& tick) {
   }
   if (b.ctl.state.state != BoxerState::GettingUp) return false;
   for (int k = in.dof_begin; k < in.dof_end; ++k) d.tau[k] = 0.0;
+  if (b.settings.tuning.stand_up.unassisted) {  // --getup unassisted: the QP with the get-up plan's supports
+    actuate_unassisted_getup(q, tick);
+    return true;
+  }
   const int pelvis = b.bodies.body[0];
   bool on_ground = false;  // a link of this boxer touching the crates or the floor (last solve's contacts)
   for (const auto& c : d.prev_contacts) {
@@ -668,6 +673,7 @@ void apply_limits(QpBalance& q, BalanceTick& tick, const QpStep& s) {
 void actuate(QpBalance& q, BalanceTick& tick) {
   QpStep s;
   begin_input(q, tick);
+  if (q.getup.active && tick.b.ctl.state.state != BoxerState::GettingUp) end_unassisted_getup(q, tick);
   if (down_or_getting_up(q, tick)) return;
   gather_contacts(q, tick, s);
   if (airborne(q, tick, s)) return;

@@ -11,6 +11,7 @@
 #include "engine/control/balance/balance_qp.h"
 #include "engine/control/servo/joint_strength.h"
 #include "engine/core/latency_histogram.h"
+#include "game/balance/getup_plan.h"
 
 namespace boxing {
 
@@ -116,6 +117,7 @@ struct QpBalance {
   std::vector<Eigen::Vector2d> pts, hull;  // scratch: contact points on the floor, their hull
   std::vector<Eigen::Vector2d> ground_hull;  // this tick's hull of every ground contact (com_acc_in_support)
   eng::core::LatencyHistogram solve_us;    // wall-clock cost of each solve (report only)
+  GetUpPlan getup;                         // --getup unassisted: the get-up under way (unassisted_getup.h)
 };
 
 inline void adjust_desired(QpBalance&, BalanceTick&) {}  // the QP plans the com itself

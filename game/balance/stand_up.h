@@ -6,6 +6,7 @@
 // term, a force- and torque-limited spring-damper pulling the pelvis toward the clip's root (position and
 // orientation), external, no reaction. Its use is reported per get-up (the report's match.getups[].root_assist_*).
 #include "engine/control/servo/root_spring.h"
+#include "game/balance/getup_plan.h"
 
 namespace boxing {
 
@@ -30,6 +31,9 @@ struct StandUpTuning {
   // N m per joint (vector norm): the servo's explicit leg gains, sized for moving the body over a planted foot, diverge
   // on a foot knocked loose when stronger (docs/decisions/balance-qp-code-history.md).
   double joint_torque_limit = 150.0;
+  // --getup unassisted: the get-up the body does (unassisted_getup.h) instead of this carried one; its plan's tuning.
+  bool unassisted = false;
+  GetUpPlanTuning plan;
 };
 
 // Writes the servo's torques and the root assist into the physics data; b.ctl.root_torque / root_force: the assist.
