@@ -439,15 +439,17 @@ void handle_keys(WindowRun& s, const FrameInput& in) {
     s.orbit.from(camera_preset(kCameras[s.camera_index], w));
   }
   // The fight keys: the first one takes over the red boxer (or the --player one) from the AI.
+  // Every press of the frame, in the order pressed (two presses of J in one frame are two jabs: player_input.h).
   if (w.match->active)
-    for (const auto& [key, action] : kFightKeys)
-      if (win.key_pressed(key)) {
-        InputEvent e;
-        e.kind = InputKind::Key;
-        e.action = action;
-        e.boxer = w.options.player >= 0 ? w.options.player : 0;
-        interaction_submit(w, e);
-      }
+    for (const int pressed : win.keys_pressed())
+      for (const auto& [key, action] : kFightKeys)
+        if (pressed == key) {
+          InputEvent e;
+          e.kind = InputKind::Key;
+          e.action = action;
+          e.boxer = w.options.player >= 0 ? w.options.player : 0;
+          interaction_submit(w, e);
+        }
   // Throws from the camera toward the cursor; Backspace clears them.
   if (in.mouse_in && win.key_pressed(GLFW_KEY_T)) interaction_submit(w, throw_from_camera(w, in.ray, ObjectKind::Ball));
   if (in.mouse_in && win.key_pressed(GLFW_KEY_Y)) interaction_submit(w, throw_from_camera(w, in.ray, ObjectKind::Crate));

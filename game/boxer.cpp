@@ -226,7 +226,7 @@ void boxer_control(const eng::physics::Model& m, eng::physics::Data& d, const en
   if (eng::anim::GraphWalker* walker = b.source.walker())
     walker->hold_transitions = (b.ctl.step[0].active && b.ctl.step[0].carried) ||
                                (b.ctl.step[1].active && b.ctl.step[1].carried);
-  b.source.tick(dt, Eigen::Rotation2Dd(-b.stance.heading) * b.ctl.anchor, &b.desired);
+  b.source.tick(dt * b.ctl.clip_rate, Eigen::Rotation2Dd(-b.stance.heading) * b.ctl.anchor, &b.desired);
   laps.lap(&ControlStageTimes::graph);
   bool swing[2];          // the clip has this foot in the air (a step)
   double clip_ankle_h[2];  // the clip's ankle above its sole's lowest end (m), for the tiptoe test

@@ -150,6 +150,8 @@ struct BoxerControlState {
   // scale (lower when stunned or knocked down).
   PunchAim aim;
   double gain_scale = 1.0;
+  // The motion's playback rate (the walk ticks dt x this): a tired boxer's punch plays slower (game/match/stamina.h).
+  double clip_rate = 1.0;
   double yaw_offset = 0.0;  // rad, added to the stance heading when placing the clip (the reset faces the opponent)
 };
 
