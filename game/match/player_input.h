@@ -51,8 +51,8 @@ struct PlayerQueue {
 
 // A key pressed for boxer k: logged, then started, buffered or refused (match_command calls it).
 void player_press(World& w, int k, FightCommand c);
-// Before control, each tick, for a player's boxer: the oldest waiting press starts if the boxer is free, or is
-// refused if it can no longer start. `fighting`: the bout is in a round (not resting, not over).
+// Before control, each tick, for a player's boxer: the oldest waiting press starts if the boxer is free (one a
+// tick), or is refused if it can no longer start.
 void player_take_input(World& w, int k);
 // The HUD's line for boxer k: the last refusal's reason while it is fresh ("" otherwise).
 const char* player_notice(const World& w, int k);
