@@ -450,7 +450,8 @@ void handle_keys(WindowRun& s, const FrameInput& in) {
     s.orbit.from(camera_preset(kCameras[s.camera_index], w));
   }
   // The fight keys (fight_keys.h): each half of the keyboard drives its boxer (two players: left red, right blue;
-  // one: the player's whole keyboard); the first key takes that boxer over from the AI.
+  // one: the player's whole keyboard); the first key takes that boxer over from the AI. Every press of the frame,
+  // in the order pressed (two presses of J in one frame are two jabs: player_input.h).
   if (w.match->active) {
     const bool versus = w.options.mode == "versus";
     const int pads = pads_connected(*w.interaction);

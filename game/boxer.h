@@ -121,8 +121,9 @@ struct BoxerControlState {
   eng::control::RootSpring root_spring;
   Eigen::Vector3d root_torque = Eigen::Vector3d::Zero();  // applied this tick (for the metrics)
   Eigen::Vector3d root_force = Eigen::Vector3d::Zero();   // the stand-up's root assist force this tick (stand_up.h)
-  // The pose source's clip played at this share of its speed (1 = as authored): the unassisted get-up's plan slows
-  // and holds its clip while the body catches up (getup_plan.h); set by the balance for the next tick.
+  // The pose source's clip played at this share of its speed (1 = as authored; the walk ticks dt x this): standing, a
+  // tired boxer's punch plays slower (the match, game/match/stamina.h); getting up, the unassisted get-up's plan slows
+  // and holds its clip while the body catches up (getup_plan.h, set by the balance for the next tick).
   double clip_rate = 1.0;
   // World / Person space: eq. 3 as implicit joint springs rooted at the feet (implicit_servo.h). Per skeleton
   // bone: the joint's servo (gains also written into the Model's Body::stiffness/damping at build time).

@@ -83,9 +83,10 @@ void draw_broadcast_hud(const MatchHud& h, const HudFonts& fonts) {
     const float x0 = k == 0 ? margin : W - margin - plate_w, x1 = x0 + plate_w;
     const float ax = k == 0 ? 0.0f : 1.0f, xt = k == 0 ? x0 + 10.0f : x1 - 10.0f;
     // The UI blends in linear space over the sRGB scene: a ground needs a high alpha to read dark.
-    dl->AddRectFilled(ImVec2(x0, top), ImVec2(x1, top + large + 58.0f), IM_COL32(6, 8, 12, 225), 6.0f);
-    dl->AddRectFilled(k == 0 ? ImVec2(x0, top) : ImVec2(x1 - 6.0f, top), k == 0 ? ImVec2(x0 + 6.0f, top + large + 58.0f)
-                                                                            : ImVec2(x1, top + large + 58.0f),
+    const float plate_h = large + 68.0f;  // the name, the consciousness and stamina bars, the punches
+    dl->AddRectFilled(ImVec2(x0, top), ImVec2(x1, top + plate_h), IM_COL32(6, 8, 12, 225), 6.0f);
+    dl->AddRectFilled(k == 0 ? ImVec2(x0, top) : ImVec2(x1 - 6.0f, top), k == 0 ? ImVec2(x0 + 6.0f, top + plate_h)
+                                                                            : ImVec2(x1, top + plate_h),
                       rgba(s.colour), 3.0f);
     hud_text(dl, fonts.large, xt, top + 4.0f, ax, bright(s.colour), s.name.c_str());
     if (!s.tag.empty()) {
@@ -99,8 +100,21 @@ void draw_broadcast_hud(const MatchHud& h, const HudFonts& fonts) {
     const float fill = std::clamp(s.consciousness, 0.0f, 1.0f) * bw;
     const float f0 = k == 0 ? bx0 : bx0 + bw - fill;
     if (fill > 0.0f) dl->AddRectFilled(ImVec2(f0, by), ImVec2(f0 + fill, by + 14.0f), bright(s.colour), 3.0f);
+    // Stamina: a thin bar under it, the same way; amber, red once below the band where it slows the punches (0.3).
+    const float sy = by + 18.0f;
+    dl->AddRectFilled(ImVec2(bx0, sy), ImVec2(bx0 + bw, sy + 6.0f), IM_COL32(40, 40, 46, 220), 2.0f);
+    const float sfill = std::clamp(s.stamina, 0.0f, 1.0f) * bw;
+    const float s0 = k == 0 ? bx0 : bx0 + bw - sfill;
+    const ImU32 scol = s.stamina < 0.3f ? IM_COL32(230, 70, 50, 255) : IM_COL32(235, 185, 60, 255);
+    if (sfill > 0.0f) dl->AddRectFilled(ImVec2(s0, sy), ImVec2(s0 + sfill, sy + 6.0f), scol, 2.0f);
     std::snprintf(line, sizeof line, "landed %d / %d   down %d", s.landed, s.thrown, s.knockdowns);
-    hud_text(dl, fonts.medium, xt, by + 20.0f, ax, dim, line);
+    hud_text(dl, fonts.medium, xt, sy + 12.0f, ax, dim, line);
+    // A refused press: why, just under the plate (player_input.h), in large type for the second it lasts.
+    if (!s.notice.empty()) {
+      std::string why = s.notice;
+      for (char& ch : why) ch = static_cast<char>(ch >= 'a' && ch <= 'z' ? ch - 'a' + 'A' : ch);
+      hud_text(dl, fonts.large, xt, top + plate_h + 6.0f, ax, IM_COL32(255, 120, 80, 255), why.c_str());
+    }
   }
   // The round and the clock.
   const int secs = static_cast<int>(h.clock_s);

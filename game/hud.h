@@ -20,7 +20,8 @@ struct HudStats {
 void draw_stats_panel(const HudStats& stats);
 
 // The match's broadcast HUD: per boxer a name plate in the boxer's colour (left red, right blue) with its
-// consciousness bar, punches landed / thrown and knockdowns; the round and its clock in the middle; a knockdown's
+// consciousness bar, its stamina bar under it, punches landed / thrown and knockdowns, and under the plate why a
+// press was refused; the round and its clock in the middle; a knockdown's
 // count in large type; the round's cards between rounds; the result. `banner` is the same news as one line of text
 // (the count, the cards, the result: what the tests read).
 struct MatchHud {
@@ -35,6 +36,8 @@ struct MatchHud {
     bool player = false;
     std::string tag;  // under the name: "YOU", "P2: RIGHT KEYS" ("" = none)
     const char* state = "";
+    float stamina = 1.0f;  // the bar under consciousness (game/match/stamina.h)
+    std::string notice;    // a refused press's reason, briefly: "tired", "hurt", "down", "busy" ("" = none)
   } side[2];
   int down = -1;               // the boxer down now (-1: none)
   int count = 0;               // the referee's count (0: not started)

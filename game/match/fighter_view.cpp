@@ -40,14 +40,16 @@ void aim_punch(World& w, int k, const Clip& c, bool standing) {
   if (!b.ctl.aim.active) return;
   const auto& xt = w.data.x[o.bodies.body[f.aim_bone]];
   b.ctl.aim.glove = c.glove;
-  b.ctl.aim.arm_gain = mt.tuning.punch_arm_gain;
+  // A tired boxer's arm is slower and weaker (stamina.h: x1 in the band): its servo frequency, the strike's speed.
+  const double tired = stamina_speed(f.stamina, mt.tuning.stamina);
+  b.ctl.aim.arm_gain = mt.tuning.punch_arm_gain * tired;
   b.ctl.aim.target = xt.p + xt.R * (f.aim_local + mt.tuning.aim_through * f.aim_dir_local);
   b.ctl.aim.weight = aim_weight(walker->clip_time(), c.impact_time, c.duration());
   // The strike drives the glove in until its first touch (of anything); from there the arm's momentum and the bent
   // pose carry it: driven on, the task pushes on into the head (impulses up to twice a power punch's).
   const bool touched = !mt.events[f.open_punch].hit_part.empty();
   b.ctl.aim.strike = touched ? 0.0 : strike_weight(walker->clip_time(), c.impact_time, mt.tuning.strike_follow);
-  b.ctl.aim.strike_speed = mt.tuning.strike_speed;
+  b.ctl.aim.strike_speed = mt.tuning.strike_speed * tired;
   b.ctl.aim.strike_rate = mt.tuning.strike_rate;
   b.ctl.aim.strike_omega = mt.tuning.strike_omega;
   b.ctl.aim.strike_weight = mt.tuning.strike_weight;

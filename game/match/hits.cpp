@@ -23,7 +23,9 @@ void resolve_landing(World& w, int attacker) {
   Boxer& def = w.boxers[k];
   MatchFighter& fd = mt.fighter[k];
   const bool head = e.hit_part == "head";
-  e.damage = e.impulse * (head ? mt.tuning.head_damage_per_ns : mt.tuning.body_damage_per_ns);
+  // A tired thrower's punch is weaker (stamina.h: x1 in the band): its power at the punch's start.
+  e.damage = e.impulse * (head ? mt.tuning.head_damage_per_ns : mt.tuning.body_damage_per_ns) *
+             stamina_power(Stamina{.level = e.stamina}, mt.tuning.stamina);
   def.ctl.root_spring.hit(def.settings.root_params, e.damage);
   fd.last_hit_at = w.data.time;
   if (!standing_state(def.ctl.state.state)) return;
@@ -141,6 +143,7 @@ void track_punches(World& w, const char* started[2]) {
     f.aim_bone = aim.bone, f.aim_local = aim.local, f.aim_dir_local = aim.dir_local;
     e.opening = aim.clear;
     e.consciousness = {b.ctl.root_spring.consciousness(), w.boxers[1 - k].ctl.root_spring.consciousness()};
+    e.stamina = f.stamina.level;
     e.target = f.ai.aim_body ? "torso" : "head";
     f.open_punch = static_cast<int>(mt.events.size());
     mt.events.push_back(std::move(e));

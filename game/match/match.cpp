@@ -16,36 +16,42 @@ namespace {
 
 using eng::anim::Clip;
 
-// A footwork command's move and turn (rad, + left): a pivot turns the stance by the most a move may
-// (FootworkTuning::max_turn clamps it); None for the graph's commands.
-std::pair<FootworkMove, double> fight_command_move(FightCommand c) {
-  constexpr double kPivot = 0.5;
-  switch (c) {
-    case FightCommand::StepForward: return {FootworkMove::Forward, 0.0};
-    case FightCommand::StepBack: return {FootworkMove::Back, 0.0};
-    case FightCommand::StepLeft: return {FootworkMove::Left, 0.0};
-    case FightCommand::StepRight: return {FootworkMove::Right, 0.0};
-    case FightCommand::PivotLeft: return {FootworkMove::Pivot, kPivot};
-    case FightCommand::PivotRight: return {FootworkMove::Pivot, -kPivot};
-    default: return {FootworkMove::None, 0.0};
+// Stamina (stamina.h), both boxers after the step: a clip started costs by its kind (a punch as track_punches counts
+// it: standing), a footwork move started costs, and the level recovers while not punching.
+void track_stamina(World& w) {
+  Match& mt = *w.match;
+  const StaminaTuning& tu = mt.tuning.stamina;
+  for (int k = 0; k < 2; ++k) {
+    Boxer& b = w.boxers[k];
+    Stamina& s = mt.fighter[k].stamina;
+    const eng::anim::GraphWalker* walker = b.source.walker();
+    if (!walker) continue;
+    const Clip& c = w.graph.clips[walker->current_clip_index()];
+    const bool punching = is_punch(&c);
+    if (walker->current_clip_index() != s.last_clip) {
+      s.last_clip = walker->current_clip_index();
+      const bool defence = c.has_tag("defence");
+      if ((punching || defence) && standing_state(b.ctl.state.state)) {
+        // A combination's clip counts once: counted twice (and a flurry's follow-up after it), the AI's combinations
+        // took an aggressive style (seed 1) out of the band within 15 s (docs/decisions/stamina.md).
+        stamina_spend(s, tu, stamina_clip_cost(s, tu, punching, 1, defence, w.data.time), punching, w.data.time);
+      }
+    }
+    const bool moving = footwork_busy(b);
+    if (moving && !s.was_moving) stamina_spend(s, tu, tu.move_cost, false, w.data.time);
+    s.was_moving = moving;
+    stamina_recover(s, tu, punching, kPhysicsDt);
   }
 }
 
-// The player's next command, taken when the boxer stands and the walk is free of a plan (a punch asked for during
-// another is taken once that one lets the graph go, like a buffered input in a fighting game).
-void take_player_command(MatchFighter& f, Boxer& b, eng::anim::GraphWalker& walker, bool can) {
-  if (f.queued > 0 && can && !walker.has_plan()) {
-    // Steps are footwork moves (footwork.h: the balance steps carry the feet); the rest are the graph's clips.
-    const FightCommand c = f.commands[0];
-    if (const auto [move, turn] = fight_command_move(c); move != FootworkMove::None) {
-      if (footwork_busy(b)) return;  // (kept queued until the move under way ends)
-      if (request_footwork(b, move, turn)) ++f.commands_taken;
-    } else if (walker.request_clip(fight_command_clip(c))) {
-      ++f.commands_taken;
-    }
-    f.ai.aim_body = false;
-    std::copy(f.commands.begin() + 1, f.commands.end(), f.commands.begin());
-    --f.queued;
+// Low stamina (stamina.h): the punch now playing plays slower (its clip's rate; 1 in the band, where the fight is the
+// same as without stamina). Standing boxers only: down or getting up, the rate is the get-up plan's (getup_plan.h).
+void set_clip_rates(World& w) {
+  Match& mt = *w.match;
+  for (int k = 0; k < 2; ++k) {
+    Boxer& b = w.boxers[k];
+    if (!standing_state(b.ctl.state.state)) continue;
+    b.ctl.clip_rate = is_punch(clip_of(w, b)) ? stamina_speed(mt.fighter[k].stamina, mt.tuning.stamina) : 1.0;
   }
 }
 
@@ -76,9 +82,7 @@ const char* fight_command_clip(FightCommand c) {
 
 void match_command(World& w, int k, FightCommand c) {
   if (!w.match->active || k < 0 || k > 1) return;
-  MatchFighter& f = w.match->fighter[k];
-  f.player = true;
-  if (c != FightCommand::None && f.queued < MatchFighter::kCommandBuffer) f.commands[f.queued++] = c;
+  player_press(w, k, c);
 }
 
 void match_setup(World& w) {
@@ -92,6 +96,7 @@ void match_setup(World& w) {
   mt.bones.forearm[0] = skel.find("forearm_l"), mt.bones.forearm[1] = skel.find("forearm_r");
   mt.bones.upper_arm[0] = skel.find("upper_arm_l"), mt.bones.upper_arm[1] = skel.find("upper_arm_r");
   mt.replay.init(static_cast<int>(kReplaySeconds * 60.0), static_cast<int>(w.data.q.size()));
+  mt.presses.reserve(4096);  // a long session's presses without a reallocation mid-fight
   for (int k = 0; k < 2 && k < static_cast<int>(w.boxers.size()); ++k) {
     MatchFighter& f = mt.fighter[k];
     f.ai.rng = Rng(w.options.seed * 0x9E3779B97F4A7C15ull + 0xF16A7ull + static_cast<uint64_t>(k));
@@ -141,7 +146,7 @@ void match_before_control(World& w) {
     const bool standing = standing_state(b.ctl.state.state);
     aim_punch(w, k, c, standing);
     if (f.player) {
-      take_player_command(f, b, *walker, standing && mt.bout.phase == BoutPhase::Fighting);
+      player_take_input(w, k);
       if (f.go_to_active) footwork_ai_tick(w, k, standing && !walker->has_plan(), false);  // the referee's errand
       continue;
     }
@@ -160,6 +165,7 @@ void match_before_control(World& w) {
     fighter_ai_tick(f.ai, *walker, v, kPhysicsDt);
     if (!walker->has_plan()) footwork_ai_tick(w, k, v.free, just_punched);
   }
+  set_clip_rates(w);
 }
 
 void match_after_step(World& w) {
@@ -168,6 +174,7 @@ void match_after_step(World& w) {
   const char* started[2];
   track_punches(w, started);
   measure_defences(w);
+  track_stamina(w);
   for (int k = 0; k < 2; ++k) mt.fighter[1 - k].saw_punch = started[k];
   if ((w.steps + 1) % kStepsPerFrame == 0) mt.replay.record(w.data.q, w.data.time);  // one per 60 Hz frame
   track_peak_speed(w);

@@ -34,8 +34,10 @@
 #include "game/match/footwork_ai.h"
 #include "game/match/footwork_metrics.h"
 #include "game/match/match_report.h"
+#include "game/match/player_input.h"
 #include "game/match/referee.h"
 #include "game/match/replay.h"
+#include "game/match/stamina.h"
 
 namespace boxing {
 
@@ -134,6 +136,8 @@ struct MatchTuning {
   double com_weight = 30.0;
   FootworkAiTuning footwork;  // the AI's steps in the ring (footwork_ai.h)
   double clinch_within = 0.45;  // m, reach_distance under which the boxers are locked (clinch.h)
+  StaminaTuning stamina;      // both boxers' wind (stamina.h, docs/decisions/stamina.md)
+  PlayerInputTuning input;    // the player's presses: the buffer, the refusal's notice (player_input.h)
 };
 
 struct PunchEvent {
@@ -153,6 +157,7 @@ struct PunchEvent {
   double impulse = 0.0;   // N s over impact_window
   double damage = 0.0;
   double landed_at = -1.0;  // s, the tick it landed (its first touch on head or torso); < 0: did not land
+  double stamina = 1.0;     // the thrower's at the punch's start (stamina.h: below the band, slower and weaker)
 };
 
 struct GetUp {
@@ -174,8 +179,8 @@ struct GetUp {
   bool counting = false;
 };
 
-// What the player asks of a boxer (keys, game/app.cpp): a punch, a defence or a step; taken by the motion graph like
-// the AI's requests (when the walk can: in guard, standing).
+// What the player asks of a boxer (keys, game/app.cpp): a punch, a defence or a step; started from guard at once, or
+// buffered while something is under way, or refused with a reason (player_input.h).
 enum class FightCommand : uint8_t {
   None, Jab, Cross, LeadHook, RearHook, LeadUppercut, RearUppercut, Block, SlipLeft, SlipRight, Duck, StepForward,
   StepBack, StepLeft, StepRight, PivotLeft, PivotRight
@@ -185,12 +190,11 @@ const char* fight_command_clip(FightCommand c);  // the clip it asks for ("" for
 struct MatchFighter {
   FighterAi ai;
   bool player = false;           // --player (or a fight key in the window): the keyboard steers this one (no AI)
-  // The player's commands, in order, taken one at a time when the walk is free (an input buffer: a key pressed during
-  // a punch is thrown after it, not lost or overwritten by the next key). At most kCommandBuffer wait; more are dropped.
-  static constexpr int kCommandBuffer = 4;
-  std::array<FightCommand, kCommandBuffer> commands{};
-  int queued = 0;
-  int commands_taken = 0;        // player commands the motion graph accepted
+  // The player's presses waiting, in order, and the last refusal (player_input.h: each press started, buffered or
+  // refused with a reason; none dropped unseen).
+  PlayerQueue input;
+  int commands_taken = 0;        // player commands started
+  Stamina stamina;               // stamina.h (both boxers, the same rule)
   int thrown = 0, landed = 0, knockdowns = 0, falls_without_hit = 0;
   // Of the knockdowns, those the match did not call: the boxer fell on its own within fall_after_hit_window of a
   // landed hit (rocked and went over; what a balance step is for).
@@ -247,6 +251,7 @@ struct Match {
   ClinchMetrics clinch;  // the time the boxers spend locked together (clinch.h)
   std::vector<DefenceMotion> defences;     // every defence as the bodies made it (defence_metrics.h)
   std::array<DefenceTrack, 2> defence_track;
+  std::vector<PlayerPress> presses;  // every fight key pressed, in order, and what became of it (player_input.h)
 };
 
 // After the boxers exist (scenario setup + place): the body map, the AI styles (seeded), consciousness dynamics.
@@ -255,7 +260,8 @@ void match_setup(World& w);
 void match_before_control(World& w);
 // After the physics step and measurements: punches, hits, damage, reactions, knockdowns, the count, get-ups.
 void match_after_step(World& w);
-// The player's command for boxer k, queued (the boxer becomes the player's from now on).
+// The player's command for boxer k: started, buffered or refused (player_input.h; the boxer becomes the player's
+// from now on).
 void match_command(World& w, int k, FightCommand c);
 
 }  // namespace boxing

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "game/interaction/input_events.h"
 #include "game/match/match.h"
 #include "game/world.h"
 
@@ -25,6 +26,8 @@ MatchHud match_hud(const World& w) {
     for (int c = 0; c < 3; ++c) h.side[k].colour[c] = w.boxers[k].team_color[c];
     if (f.player) h.side[k].tag = "YOU";
     h.side[k].state = boxer_state_name(w.boxers[k].ctl.state.state);
+    h.side[k].stamina = static_cast<float>(f.stamina.level);
+    h.side[k].notice = player_notice(w, k);
     if (f.getup >= 0 && !mt.over) {
       const GetUp& g = mt.getups[f.getup];
       // The count's number once it has started (the standing boxer in a neutral corner, referee.h).
@@ -75,6 +78,12 @@ BoutSummary bout_summary(const World& w) {
 
 namespace {
 
+// A fight command's key action (input_events.h: the --input file's name for it).
+const char* fight_command_action(FightCommand c) {
+  const int i = static_cast<int>(c) - 1;
+  return i >= 0 && i < kKeyActionCount ? kKeyActions[i] : "none";
+}
+
 // Per boxer, the footwork as measured (footwork_metrics.h) and the ropes' contact time (ring_ropes.h).
 nlohmann::json footwork_report(const World& w) {
   nlohmann::json out = nlohmann::json::array();
@@ -117,6 +126,7 @@ nlohmann::json match_report(const World& w) {
                       {"consciousness", e.consciousness},
                       {"impulse", e.impulse},
                       {"damage", e.damage},
+                      {"stamina", e.stamina},
                       {"landed_at", e.landed ? nlohmann::json(e.landed_at) : nlohmann::json(nullptr)}});
   nlohmann::json getups = nlohmann::json::array();
   for (const GetUp& g : mt.getups)
@@ -161,6 +171,18 @@ nlohmann::json match_report(const World& w) {
   const std::string result_text = mt.over       ? bt.result.text
                                   : winner < 0 ? "DRAW SO FAR"
                                                : std::string(winner == 0 ? "RED" : "BLUE") + " AHEAD ON POINTS";
+  // Every fight key pressed and what became of it (player_input.h).
+  nlohmann::json inputs = nlohmann::json::array();
+  for (const PlayerPress& p : mt.presses) {
+    nlohmann::json j = {{"t_pressed", p.t_pressed},
+                        {"action", fight_command_action(p.action)},
+                        {"boxer", p.boxer},
+                        {"waited", p.waited == PressWait::Free ? "free" : "buffered"}};
+    if (p.t_started >= 0.0) j["t_started"] = p.t_started;
+    else if (p.refused) j["refused"] = p.refused;
+    else j["pending"] = true;  // still waiting when the run ended
+    inputs.push_back(std::move(j));
+  }
   std::vector<double> speeds, fists;
   for (const PunchEvent& e : mt.events)
     if (e.landed) speeds.push_back(e.speed), fists.push_back(e.fist_speed);
@@ -188,6 +210,10 @@ nlohmann::json match_report(const World& w) {
            })},
           {"ai", w.options.ai},  // the AI levels asked for (--ai), red's and blue's
           {"player_commands_taken", pair([](const MatchFighter& f) { return f.commands_taken; })},
+          {"player_inputs", inputs},
+          {"stamina", pair([](const MatchFighter& f) { return f.stamina.level; })},
+          {"stamina_lowest", pair([](const MatchFighter& f) { return f.stamina.lowest; })},
+          {"stamina_rule", stamina_rule_text(mt.tuning.stamina)},
           {"round_seconds", bt.round_seconds},
           {"round", bt.round},
           {"rounds_scheduled", bt.tuning.rounds},

@@ -546,8 +546,8 @@ TEST(Match, PlayersBoxerPunchesOnlyOnCommand) {
   EXPECT_EQ(red_crosses, 1);
   // Keys pressed faster than the punches play are buffered and thrown in order, none lost.
   for (FightCommand c : {FightCommand::Jab, FightCommand::Cross, FightCommand::Jab}) match_command(world, 0, c);
-  EXPECT_EQ(world.match->fighter[0].queued, 3);
-  for (int i = 0; i < 6 * 240 && world.match->fighter[0].queued > 0; ++i) step_world(world);
+  EXPECT_EQ(world.match->fighter[0].input.queued, 3);
+  for (int i = 0; i < 6 * 240 && world.match->fighter[0].input.queued > 0; ++i) step_world(world);
   for (int i = 0; i < 240; ++i) step_world(world);
   EXPECT_EQ(world.match->fighter[0].commands_taken, 4);
   std::vector<std::string> red;

@@ -62,3 +62,54 @@ TEST(MatchWindow, FightKeysThrowThePlayersPunches) {
   EXPECT_EQ(red, (std::vector<std::string>{"jab", "cross", "jab"})) << m["events"].dump();
   EXPECT_TRUE(blue.empty()) << m["events"].dump();
 }
+
+// Every press accounted for in the window (player_input.h): the player mashes J and K (ten keys 0.15 s apart, faster
+// than punches play), then presses four keys 0.4 s apart, against blue's AI. Every key xdotool pressed reached the
+// match (the recording's key events) and each is in the report's player_inputs: started, or refused with its reason
+// (busy, hurt, tired, ...); none is left waiting or missing, and a press taken while free started on the next tick.
+TEST(MatchWindow, EveryKeyPressIsStartedOrRefusedWithAReason) {
+  BOXING_REQUIRE_DISPLAY_AND_XDOTOOL();
+  boxing_test::pin_lavapipe_env();
+  const std::string dir = std::string(BOXING_BINARY_DIR) + "/match_window_presses_test";
+  const std::string report = dir + "/report.json", record = dir + "/keys.json";
+  std::system(("rm -rf " + dir + " && mkdir -p " + dir).c_str());
+  const std::string cmd =
+      "(timeout 120 " + std::string(BOXING_BINARY_DIR) + "/boxing --scenario match --player 0 --seed 3 --seconds 14 "
+      "--start-apart 1.0 --no-vsync --width 640 --height 360 --record " + record + " --report " + report +
+      " >/dev/null 2>&1 &) ; "
+      "win=$(timeout 60 xdotool search --sync --onlyvisible --name 'Boxing - match' | head -1) && "
+      "timeout 10 xdotool windowfocus $win && sleep 1.5 && "
+      "xdotool key --window $win --delay 150 j j k j k j j k j j && sleep 1.0 && "
+      "xdotool key --window $win --delay 400 j k u i; "
+      "for i in $(seq 1 240); do [ -s " + report + " ] && break; sleep 0.5; done";
+  const std::string script = dir + "/session.sh";
+  std::ofstream(script) << cmd << "\n";
+  ASSERT_EQ(std::system(("bash " + script).c_str()), 0);
+  std::ifstream in(report);
+  ASSERT_TRUE(in.good()) << "the game wrote no report";
+  const nlohmann::json m = nlohmann::json::parse(in)["match"];
+  std::ifstream rin(record);
+  ASSERT_TRUE(rin.good()) << "the game wrote no recording";
+  const nlohmann::json rec = nlohmann::json::parse(rin, nullptr, false);
+  std::vector<std::string> keys, logged;
+  for (const auto& e : rec["events"])
+    if (e.contains("key")) keys.push_back(e["key"]["action"].get<std::string>());
+  EXPECT_EQ(keys.size(), 14u) << rec.dump();  // every xdotool press became a key event
+  int started = 0, refused = 0;
+  for (const auto& p : m["player_inputs"]) {
+    logged.push_back(p["action"].get<std::string>());
+    EXPECT_TRUE(p.contains("t_started") != p.contains("refused")) << p.dump();  // one or the other, never neither
+    if (p.contains("t_started")) {
+      ++started;
+      if (p["waited"] == "free") {
+        EXPECT_NEAR(p["t_started"].get<double>() - p["t_pressed"].get<double>(), 1.0 / 240.0, 1e-9) << p.dump();
+      }
+    } else {
+      ++refused;
+      EXPECT_FALSE(p["refused"].get<std::string>().empty());
+    }
+  }
+  EXPECT_EQ(logged, keys);  // the same presses, in the same order
+  EXPECT_GE(started, 1);
+  std::printf("window: %zu presses, %d started, %d refused\n", keys.size(), started, refused);
+}
