@@ -407,9 +407,10 @@ TEST(GraphWalk, ACarriedStepWhoseLandingIsWhereTheFootStandsIsNotTaken) {
   // foot is, and the foot was lifted and put back within 2 cm (a boxer marking time). With StepTuning::carry_in_place
   // off, such steps land in place (the situation: a seed shows it when one does); with it (the default) those steps
   // are not taken (steps_in_place) and none lands in place, the boxer stands, and the steps that go somewhere are
-  // still taken (3 or more). (Walk seed 21, 30 s, was the one named.) measured (seeds 1-6, 15 s): steps landed in
-  // place with it off on seeds 5 and 6; with it none on any seed, 1-4 steps not taken there; seed 5 fails (1 step
-  // travelled). require: the situation on at least 1 seed, at most 2 seeds failing (1 measured; one may move).
+  // still taken (2 or more). (Walk seed 21, 30 s, was the one named.) measured (seeds 1-6, 15 s, the clips of issue
+  // 65's defences): steps landed in place with it off on seeds 2-4; with it none on any seed, 1-2 steps not taken
+  // there, 2-5 steps travelled (the graph's 157 transitions reach the step clips less often than the 213 before: 3
+  // or more then). require: the situation on at least 1 seed, at most 2 seeds failing (none measured).
   constexpr double kWalkSeconds = 15.0;
   const ShownRate s = over_seeds_shown("graph walk, steps marking time", 1, 6, [](int seed, bool* shown) {
     const std::string sd = std::to_string(seed);
@@ -424,7 +425,7 @@ TEST(GraphWalk, ACarriedStepWhoseLandingIsWhereTheFootStandsIsNotTaken) {
     why.check(marking_time.steps_in_place == 0, "off: " + std::to_string(marking_time.steps_in_place) + " not taken");
     why.check(!m.fell, fell_why(m));
     why.check(m.steps_landed_in_place == 0, std::to_string(m.steps_landed_in_place) + " landed in place");
-    why.check(m.step_travel_count >= 3, "only " + std::to_string(m.step_travel_count) + " steps travelled");
+    why.check(m.step_travel_count >= 2, "only " + std::to_string(m.step_travel_count) + " steps travelled");
     if (*shown) why.check(m.steps_in_place > 0, "no step left untaken");
     return why.str();
   });

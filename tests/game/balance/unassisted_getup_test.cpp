@@ -7,6 +7,7 @@
 #include <string>
 
 #include "game/cli.h"
+#include "game/match/referee.h"
 #include "game/world.h"
 
 namespace boxing {
@@ -41,8 +42,8 @@ TEST(UnassistedGetUp, IsNotTheDefault) {
   for (const Boxer& b : w->boxers) EXPECT_FALSE(b.settings.tuning.stand_up.unassisted);
 }
 
-// Match seed 3: boxer 0 is knocked down on its front at 29.1 s (the same with either get-up: the fight before it is
-// the same). Unassisted, nothing but the body's joints and the QP's root torque acts on it: the record's lift force is
+// Match seed 3: boxer 0 is knocked down at 2 s by the referee's own call, pushed toward where it faces, so it falls on
+// its front whatever the fight does (knock_down, referee.h). Unassisted, nothing but the body's joints and the QP's root torque acts on it: the record's lift force is
 // 0 to the bit (no force is ever applied: by construction, so no tolerance), its root torque at most the plan's limit
 // (GetUpPlanTuning::max_root_torque; the QP clamps it, 1e-9 N m for the clamp's rounding), and the plan gets past
 // its first phase (push_up -> hands_knees: the gate opened on a measured support). It does not get up in time today
@@ -51,11 +52,14 @@ TEST(UnassistedGetUp, IsNotTheDefault) {
 TEST(UnassistedGetUp, PutsNoForceOnTheBodyAndFollowsThePlansPhases) {
   auto w = match_world(3, "unassisted");
   ASSERT_TRUE(w);
-  for (int i = 0; i < 36 * 240; ++i) step_world(*w);
+  for (int i = 0; i < 2 * 240; ++i) step_world(*w);
+  const Eigen::Vector3d facing = w->data.x[w->boxers[1].bodies.body[0]].p - w->data.x[w->boxers[0].bodies.body[0]].p;
+  knock_down(*w, 0, Eigen::Vector3d(facing.x(), facing.y(), 0.0).normalized(), "test");
+  for (int i = 0; i < 9 * 240; ++i) step_world(*w);
   const GetUpRecord* r = nullptr;
   for (const GetUpRecord& g : w->getups.records)
-    if (g.boxer == 0 && g.down_at > 28.0 && g.down_at < 30.0) r = &g;
-  ASSERT_NE(r, nullptr) << "no knockdown of boxer 0 at 29 s: the fight changed";
+    if (g.boxer == 0 && g.down_at >= 2.0) r = &g;
+  ASSERT_NE(r, nullptr) << "no knockdown of boxer 0 after the call at 2 s";
   EXPECT_EQ(r->lying, "front");
   EXPECT_EQ(r->lift_force_peak, 0.0);
   EXPECT_EQ(r->lift_force_sq_dt, 0.0);
