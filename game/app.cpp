@@ -203,7 +203,7 @@ eng::Result<HeadlessRun> run_headless(const Options& o) {
       eng::ui::ui_begin(r.ui(), in);
       draw_stats_panel({float(sim.ms.back()), r.device_name(),
                         {"t = " + std::to_string(w.data.time) + " s", "scenario " + o.scenario},
-                        w.match->active ? 130.0f : 10.0f});  // below the HUD's name plates
+                        w.match->active ? 175.0f : 10.0f});  // below the HUD's name plates and their notices
       if (w.match->active) draw_broadcast_hud(match_hud(w), hud_fonts(r.ui()));
       eng::ui::ui_end(r.ui());
     }
@@ -674,7 +674,7 @@ void draw_panels(WindowRun& s) {
     // Below the HUD's name plates. The HUD shows the frame as the player gets it: from one shown frame to the next.
     HudStats stats{s.times.frame.ms.empty() ? 0.0f : float(s.times.frame.ms.back()), s.r.device_name(),
                    {status, "F12 shot  H debug  C camera  Tab panel  Esc menu"}};
-    stats.top = 130.0f;
+    stats.top = 175.0f;  // below the name plates and their notices (TIRED, BUSY)
     draw_stats_panel(stats);
   }
   if (playing && s.panel.open) {
