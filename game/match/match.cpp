@@ -45,12 +45,16 @@ void track_stamina(World& w) {
 }
 
 // Low stamina (stamina.h): the punch now playing plays slower (its clip's rate; 1 in the band, where the fight is the
-// same as without stamina). Standing boxers only: down or getting up, the rate is the get-up plan's (getup_plan.h).
+// same as without stamina). Down or getting up the clips play as authored, or at the unassisted get-up plan's rate
+// (getup_plan.h, set by the balance).
 void set_clip_rates(World& w) {
   Match& mt = *w.match;
   for (int k = 0; k < 2; ++k) {
     Boxer& b = w.boxers[k];
-    if (!standing_state(b.ctl.state.state)) continue;
+    if (!standing_state(b.ctl.state.state)) {
+      if (!b.settings.tuning.stand_up.unassisted) b.ctl.clip_rate = 1.0;
+      continue;
+    }
     b.ctl.clip_rate = is_punch(clip_of(w, b)) ? stamina_speed(mt.fighter[k].stamina, mt.tuning.stamina) : 1.0;
   }
 }
