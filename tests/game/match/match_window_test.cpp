@@ -16,37 +16,57 @@
 #include "support/window_test_env.h"
 #include "test_paths.h"
 
-TEST(MatchWindow, FightKeysThrowThePlayersPunches) {
-  BOXING_REQUIRE_DISPLAY_AND_XDOTOOL();
-  boxing_test::pin_lavapipe_env();
-  const std::string dir = std::string(BOXING_BINARY_DIR) + "/match_window_test";
-  const std::string report = dir + "/report.json", record = dir + "/keys.json", input = dir + "/blue_idle.json";
-  std::system(("rm -rf " + dir + " && mkdir -p " + dir).c_str());
-  std::ofstream(input) << R"({"events": [{"t": 0, "set": {"boxer": 1, "control": "player"}}]})" << "\n";
-  // The game in the background; once its window is mapped, focus it and press the keys a second apart.
+namespace {
+
+struct WindowSession {
+  nlohmann::json report, recording;
+};
+
+// The game in the background in `dir` (a match, red the player's: `args` adds to it); once its window is mapped, it
+// is focused and `keys` (xdotool commands on $win) run; then the run's report and its --record recording are read.
+WindowSession play_window_session(const std::string& dir, const std::string& args, const std::string& keys) {
+  const std::string report = dir + "/report.json", record = dir + "/keys.json";
   const std::string cmd =
-      "(timeout 120 " + std::string(BOXING_BINARY_DIR) + "/boxing --scenario match --player 0 --seed 3 --seconds 8 --no-vsync " +
-      "--width 640 --height 360 --input " + input + " --record " + record + " --report " + report +
-      " >/dev/null 2>&1 &) ; "
+      "(timeout 120 " + std::string(BOXING_BINARY_DIR) + "/boxing --scenario match --player 0 --seed 3 --no-vsync " +
+      "--width 640 --height 360 " + args + " --record " + record + " --report " + report + " >/dev/null 2>&1 &) ; "
       "win=$(timeout 60 xdotool search --sync --onlyvisible --name 'Boxing - match' | head -1) && "
-      "timeout 10 xdotool windowfocus $win && sleep 1.5 && "
-      "xdotool key --window $win j && sleep 1.2 && xdotool key --window $win k && sleep 1.2 && "
-      "xdotool key --window $win j; "
+      "timeout 10 xdotool windowfocus $win && sleep 1.5 && " + keys + "; "
       "for i in $(seq 1 240); do [ -s " + report + " ] && break; sleep 0.5; done";
   // As a script file: through std::system's sh -c, $(...) and $win would be expanded before the game starts.
   const std::string script = dir + "/session.sh";
   std::ofstream(script) << cmd << "\n";
-  ASSERT_EQ(std::system(("bash " + script).c_str()), 0);
+  WindowSession out;
+  EXPECT_EQ(std::system(("bash " + script).c_str()), 0);
   std::ifstream in(report);
-  ASSERT_TRUE(in.good()) << "the game wrote no report";
-  const nlohmann::json r = nlohmann::json::parse(in);
+  EXPECT_TRUE(in.good()) << "the game wrote no report";
+  if (in.good()) out.report = nlohmann::json::parse(in, nullptr, false);
+  std::ifstream rin(record);
+  EXPECT_TRUE(rin.good()) << "the game wrote no recording";
+  if (rin.good()) out.recording = nlohmann::json::parse(rin, nullptr, false);
+  return out;
+}
+
+}  // namespace
+
+TEST(MatchWindow, FightKeysThrowThePlayersPunches) {
+  BOXING_REQUIRE_DISPLAY_AND_XDOTOOL();
+  boxing_test::pin_lavapipe_env();
+  const std::string dir = std::string(BOXING_BINARY_DIR) + "/match_window_test";
+  const std::string input = dir + "/blue_idle.json";
+  std::system(("rm -rf " + dir + " && mkdir -p " + dir).c_str());
+  std::ofstream(input) << R"({"events": [{"t": 0, "set": {"boxer": 1, "control": "player"}}]})" << "\n";
+  // Keys a second apart.
+  const WindowSession session = play_window_session(dir, "--seconds 8 --input " + input,
+      "xdotool key --window $win j && sleep 1.2 && xdotool key --window $win k && sleep 1.2 && "
+      "xdotool key --window $win j");
+  ASSERT_FALSE(session.report.is_discarded() || session.report.is_null());
+  ASSERT_FALSE(session.recording.is_discarded() || session.recording.is_null());
+  const nlohmann::json& r = session.report;
   const auto& m = r["match"];
   EXPECT_TRUE(m["players"][0].get<bool>());
   EXPECT_TRUE(m["players"][1].get<bool>());  // blue handed to the (idle) player by the input file
   // Each key became its own fight-key event, in the order pressed (the recording holds every input event applied).
-  std::ifstream rin(record);
-  ASSERT_TRUE(rin.good()) << "the game wrote no recording";
-  const nlohmann::json rec = nlohmann::json::parse(rin, nullptr, false);
+  const nlohmann::json& rec = session.recording;
   std::vector<std::string> keys;
   for (const auto& e : rec["events"])
     if (e.contains("key")) {
@@ -71,26 +91,14 @@ TEST(MatchWindow, EveryKeyPressIsStartedOrRefusedWithAReason) {
   BOXING_REQUIRE_DISPLAY_AND_XDOTOOL();
   boxing_test::pin_lavapipe_env();
   const std::string dir = std::string(BOXING_BINARY_DIR) + "/match_window_presses_test";
-  const std::string report = dir + "/report.json", record = dir + "/keys.json";
   std::system(("rm -rf " + dir + " && mkdir -p " + dir).c_str());
-  const std::string cmd =
-      "(timeout 120 " + std::string(BOXING_BINARY_DIR) + "/boxing --scenario match --player 0 --seed 3 --seconds 14 "
-      "--start-apart 1.0 --no-vsync --width 640 --height 360 --record " + record + " --report " + report +
-      " >/dev/null 2>&1 &) ; "
-      "win=$(timeout 60 xdotool search --sync --onlyvisible --name 'Boxing - match' | head -1) && "
-      "timeout 10 xdotool windowfocus $win && sleep 1.5 && "
+  const WindowSession session = play_window_session(dir, "--seconds 14 --start-apart 1.0",
       "xdotool key --window $win --delay 150 j j k j k j j k j j && sleep 1.0 && "
-      "xdotool key --window $win --delay 400 j k u i; "
-      "for i in $(seq 1 240); do [ -s " + report + " ] && break; sleep 0.5; done";
-  const std::string script = dir + "/session.sh";
-  std::ofstream(script) << cmd << "\n";
-  ASSERT_EQ(std::system(("bash " + script).c_str()), 0);
-  std::ifstream in(report);
-  ASSERT_TRUE(in.good()) << "the game wrote no report";
-  const nlohmann::json m = nlohmann::json::parse(in)["match"];
-  std::ifstream rin(record);
-  ASSERT_TRUE(rin.good()) << "the game wrote no recording";
-  const nlohmann::json rec = nlohmann::json::parse(rin, nullptr, false);
+      "xdotool key --window $win --delay 400 j k u i");
+  ASSERT_FALSE(session.report.is_discarded() || session.report.is_null());
+  ASSERT_FALSE(session.recording.is_discarded() || session.recording.is_null());
+  const nlohmann::json m = session.report["match"];
+  const nlohmann::json& rec = session.recording;
   std::vector<std::string> keys, logged;
   for (const auto& e : rec["events"])
     if (e.contains("key")) keys.push_back(e["key"]["action"].get<std::string>());
